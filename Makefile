@@ -1,0 +1,46 @@
+# tessera: `make demo` and `make test` do all the set-up on a fresh Debian 12 machine.
+# With CI=true, `make test` builds with warnings as errors, runs the suite, then builds and runs it
+# once more under AddressSanitizer and UndefinedBehaviorSanitizer.
+JOBS ?= $(shell nproc)
+DEMO_OUT ?= out/demo
+TESSERA := build/dev/apps/tessera/tessera
+
+.PHONY: all deps build demo test test-dev test-ci test-sanitize bench clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	cmake --preset dev
+	cmake --build --preset dev -j $(JOBS)
+
+demo: build
+	$(TESSERA) explore --out $(DEMO_OUT)
+
+ifeq ($(CI),true)
+test: test-ci test-sanitize
+else
+test: test-dev
+endif
+
+test-dev: build
+	ctest --test-dir build/dev --output-on-failure -j $(JOBS)
+
+test-ci: deps
+	cmake --preset ci
+	cmake --build --preset ci -j $(JOBS)
+	ctest --test-dir build/ci --output-on-failure -j $(JOBS)
+
+test-sanitize: deps
+	cmake --preset asan-ubsan
+	cmake --build --preset asan-ubsan -j $(JOBS)
+	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --test-dir build/asan-ubsan --output-on-failure -j $(JOBS)
+
+bench: build
+	build/dev/bench/explore/explore_bench
+
+clean:
+	rm -rf build out

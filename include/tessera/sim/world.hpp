@@ -1,0 +1,55 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "tessera/core/cell.hpp"
+#include "tessera/core/vec2.hpp"
+#include "tessera/grid/grid_geometry.hpp"
+#include "tessera/grid/occupancy_grid.hpp"
+
+namespace tessera {
+
+/// Ground truth for the simulator: which cells are solid. Unknown space in a source map counts as
+/// solid (a robot can neither see into nor drive through it), and so does everything outside the
+/// grid. Cells, not a cost map: the robot occupies one cell of the exploration grid
+/// (docs/decisions/0002-robot-is-one-cell.md).
+class World {
+ public:
+  World() = default;
+  /// Precondition: solid.size() == geometry.size(); 1 = solid, 0 = free.
+  World(const GridGeometry& geometry, std::vector<std::uint8_t> solid, std::string name = {});
+
+  /// A world from a map: free where the cell is known and p < free_below, solid elsewhere.
+  [[nodiscard]] static World from_map(const OccupancyGrid& map, double free_below = 0.5,
+                                      std::string name = {});
+
+  [[nodiscard]] const GridGeometry& geometry() const { return geometry_; }
+  [[nodiscard]] const std::string& name() const { return name_; }
+  /// True for solid cells and for every cell outside the grid.
+  [[nodiscard]] bool solid(Cell c) const {
+    return !geometry_.contains(c) || solid_[geometry_.index_of(c)] != 0;
+  }
+  [[nodiscard]] bool free(Cell c) const { return !solid(c); }
+  [[nodiscard]] std::size_t free_count() const;
+
+  /// The same world on a grid of `resolution_m` covering the same extent. A coarse cell is solid
+  /// when any fine cell it overlaps is solid, so thin walls never open (errors fall on the safe
+  /// side). Precondition: resolution_m > 0.
+  [[nodiscard]] World resampled(double resolution_m) const;
+
+  /// Distance from `from_m` along `angle_rad` to the first solid cell boundary, exact on the grid
+  /// (Amanatides & Woo traversal); max_range_m when nothing is hit within it.
+  [[nodiscard]] double cast_ray(Vec2 from_m, double angle_rad, double max_range_m) const;
+
+  /// Free cells 4-connected to `start` (the lecture robot's moves): the space a robot can explore.
+  /// Returns one byte per cell (1 = reachable). Empty start or solid start: all zero.
+  [[nodiscard]] std::vector<std::uint8_t> reachable_from(Cell start) const;
+
+ private:
+  GridGeometry geometry_;
+  std::vector<std::uint8_t> solid_;
+  std::string name_;
+};
+
+}  // namespace tessera

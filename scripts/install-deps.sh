@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs tessera's build and test dependencies from Debian 12 packages.
+# Idempotent: when every package is already installed it does nothing (no network).
+set -euo pipefail
+
+packages=(
+  build-essential cmake make pkg-config
+  libeigen3-dev libceres-dev libopencv-dev libnanoflann-dev libcli11-dev libfmt-dev
+  nlohmann-json3-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"

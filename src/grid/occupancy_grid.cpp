@@ -1,0 +1,49 @@
+#include "tessera/grid/occupancy_grid.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace tessera {
+
+std::optional<std::string> validate(const SensorModelOptions& o) {
+  const auto in_open_unit = [](double p) { return p > 0.0 && p < 1.0; };
+  if (!in_open_unit(o.p_hit) || o.p_hit <= 0.5) return "p_hit must be in (0.5, 1)";
+  if (!in_open_unit(o.p_miss) || o.p_miss >= 0.5) return "p_miss must be in (0, 0.5)";
+  if (!in_open_unit(o.p_clamp_min) || !in_open_unit(o.p_clamp_max) ||
+      o.p_clamp_min >= o.p_clamp_max) {
+    return "p_clamp_min and p_clamp_max must satisfy 0 < min < max < 1";
+  }
+  return std::nullopt;
+}
+
+void OccupancyGrid::set_probability(Cell c, double p) {
+  const std::size_t i = geometry_.index_of(c);
+  log_odds_[i] = log_odds(std::clamp(p, 1e-4, 1.0 - 1e-4));
+  known_[i] = 1;
+}
+
+void OccupancyGrid::set_unknown(Cell c) {
+  const std::size_t i = geometry_.index_of(c);
+  log_odds_[i] = 0.0f;
+  known_[i] = 0;
+}
+
+void OccupancyGrid::add_log_odds(Cell c, float delta, float clamp_min, float clamp_max) {
+  const std::size_t i = geometry_.index_of(c);
+  log_odds_[i] = std::clamp(log_odds_[i] + delta, clamp_min, clamp_max);
+  known_[i] = 1;
+}
+
+void OccupancyGrid::apply_hit(Cell c, const SensorModelOptions& model) {
+  add_log_odds(c, log_odds(model.p_hit), log_odds(model.p_clamp_min), log_odds(model.p_clamp_max));
+}
+
+void OccupancyGrid::apply_miss(Cell c, const SensorModelOptions& model) {
+  add_log_odds(c, log_odds(model.p_miss), log_odds(model.p_clamp_min), log_odds(model.p_clamp_max));
+}
+
+std::size_t OccupancyGrid::known_count() const {
+  return static_cast<std::size_t>(std::count(known_.begin(), known_.end(), std::uint8_t{1}));
+}
+
+}  // namespace tessera

@@ -23,7 +23,8 @@ struct CellSensorOptions {
 };
 
 /// Writes the reading into `map`: the centre cell becomes free (the robot stands in it) and each
-/// reported neighbour gets p_free or p_occupied. Changed cells are appended to `touched` if not null.
+/// reported neighbour gets p_free or p_occupied. Changed cells are appended to `touched` if not
+/// null.
 void insert_cell_reading(OccupancyGrid& map, const CellReading& reading,
                          const CellSensorOptions& options, std::vector<Cell>* touched);
 

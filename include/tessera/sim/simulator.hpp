@@ -24,8 +24,8 @@ struct RobotSpec {
   LidarOptions lidar;  // used by kLidar
 };
 
-/// What happened to a requested move. A move into a solid cell, off the map, or to a cell that is not
-/// a 4-neighbour is refused: the robot stays where it was and `reason` says why.
+/// What happened to a requested move. A move into a solid cell, off the map, or to a cell that is
+/// not a 4-neighbour is refused: the robot stays where it was and `reason` says why.
 struct MoveOutcome {
   bool moved = false;
   double distance_m = 0.0;  // travelled
@@ -41,21 +41,28 @@ class Simulator {
 
   [[nodiscard]] const World& world() const { return world_; }
 
-  /// Places a robot at the centre of `start`, heading along +x. Input error when the cell is outside
-  /// the map or solid ("start (x, y) is inside an obstacle").
+  /// Places a robot at the centre of `start`, heading along +x. Input error when the cell is
+  /// outside the map ("start (x, y) is outside the map"), solid ("start (x, y) is inside an
+  /// obstacle"), or a lidar robot's options do not validate ("lidar: <what is wrong>").
   [[nodiscard]] Result<int> add_robot(Cell start, const RobotSpec& spec);
   [[nodiscard]] int robot_count() const { return static_cast<int>(robots_.size()); }
   [[nodiscard]] const RobotSpec& spec(int robot) const;
   [[nodiscard]] Pose2 pose(int robot) const;  // ground truth, T_world_robot
   [[nodiscard]] Cell cell(int robot) const;
 
-  /// Moves the robot to the 4-neighbour `next` (see MoveOutcome for refusals).
+  /// Moves the robot to the 4-neighbour `next` (see MoveOutcome for refusals), ending at its centre
+  /// heading along the move. Cell robot: teleports. Lidar robot: turns in place by turn_rad, then
+  /// drives straight one cell (refused if that segment crosses a solid cell). Refusal reasons:
+  /// "cell (x, y) is not a 4-neighbour of (x, y)", "cell (x, y) is outside the map",
+  /// "cell (x, y) is solid", checked in that order.
   MoveOutcome move_to_adjacent(int robot, Cell next);
 
   /// The cell robot's reading of its 8 neighbours (exact).
   [[nodiscard]] CellReading sense_cells(int robot) const;
   /// A lidar scan from the robot's pose with the robot's range noise; the sensor sits at the
-  /// robot's centre.
+  /// robot's centre. Each beam is World::cast_ray plus a Gaussian draw from the robot's Rng (one
+  /// draw per beam, hit or not), clamped to [0, max_range_m]; a beam that hits nothing within
+  /// max_range_m reports exactly max_range_m ("no return"). Uses spec(robot).lidar for any kind.
   [[nodiscard]] RangeScan scan(int robot);
 
  private:

@@ -39,7 +39,10 @@ class World {
   [[nodiscard]] World resampled(double resolution_m) const;
 
   /// Distance from `from_m` along `angle_rad` to the first solid cell boundary, exact on the grid
-  /// (Amanatides & Woo traversal); max_range_m when nothing is hit within it.
+  /// (Amanatides & Woo traversal); max_range_m when nothing is hit within it. 0 when from_m lies in
+  /// a solid cell or outside the grid. A ray through an exact cell corner takes the x step first
+  /// (grid/ray_cast.hpp), so it stops there if the cell beside it in x is solid.
+  /// Cost: O(distance / resolution).
   [[nodiscard]] double cast_ray(Vec2 from_m, double angle_rad, double max_range_m) const;
 
   /// Free cells 4-connected to `start` (the lecture robot's moves): the space a robot can explore.

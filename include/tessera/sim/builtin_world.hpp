@@ -1,0 +1,17 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "tessera/sim/world.hpp"
+
+namespace tessera {
+
+/// Names of the floor plans tessera ships (made in code, no data files).
+[[nodiscard]] std::vector<std::string> builtin_world_names();
+
+/// A built-in floor plan rasterised at `resolution_m`, or an empty World (size 0) for an unknown
+/// name. "office": 16 m x 12 m, four rooms off a corridor, a hall with a pillar; walls 0.2 m thick.
+/// "labyrinth": the lecture's small maze of corridors one metre wide, 8 m x 8 m.
+[[nodiscard]] World builtin_world(const std::string& name, double resolution_m = 0.1);
+
+}  // namespace tessera

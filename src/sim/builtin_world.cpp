@@ -1,0 +1,73 @@
+#include "tessera/sim/builtin_world.hpp"
+
+#include <cmath>
+#include <cstdint>
+
+namespace tessera {
+namespace {
+
+/// An axis-aligned solid box, metres.
+struct Box {
+  double x0, y0, x1, y1;
+};
+
+World rasterize_boxes(const std::vector<Box>& boxes, double width_m, double height_m,
+                      double resolution_m, std::string name) {
+  const int w = static_cast<int>(std::ceil(width_m / resolution_m - 1e-9));
+  const int h = static_cast<int>(std::ceil(height_m / resolution_m - 1e-9));
+  const GridGeometry geometry({0.0, 0.0}, resolution_m, w, h);
+  std::vector<std::uint8_t> solid(geometry.size(), 0);
+  for (const Box& b : boxes) {
+    // A cell is solid when the box overlaps its interior, so walls never get thinner than drawn.
+    const int cx0 = static_cast<int>(std::floor(b.x0 / resolution_m + 1e-9));
+    const int cy0 = static_cast<int>(std::floor(b.y0 / resolution_m + 1e-9));
+    const int cx1 = static_cast<int>(std::ceil(b.x1 / resolution_m - 1e-9));
+    const int cy1 = static_cast<int>(std::ceil(b.y1 / resolution_m - 1e-9));
+    for (int y = std::max(cy0, 0); y < std::min(cy1, h); ++y) {
+      for (int x = std::max(cx0, 0); x < std::min(cx1, w); ++x) {
+        solid[geometry.index_of({x, y})] = 1;
+      }
+    }
+  }
+  return World(geometry, std::move(solid), std::move(name));
+}
+
+World office(double resolution_m) {
+  constexpr double kW = 16.0, kH = 12.0, kT = 0.2;  // extent and wall thickness
+  const std::vector<Box> walls = {
+      // Outer walls.
+      {0, 0, kW, kT}, {0, kH - kT, kW, kH}, {0, 0, kT, kH}, {kW - kT, 0, kW, kH},
+      // Corridor's north wall at y = 8 with a door into each of the three rooms above.
+      {0, 8.0, 2.0, 8.0 + kT}, {3.0, 8.0, 7.0, 8.0 + kT}, {8.0, 8.0, 12.0, 8.0 + kT},
+      {13.0, 8.0, kW, 8.0 + kT},
+      // Walls between the rooms above the corridor.
+      {5.0, 8.0, 5.0 + kT, kH}, {10.5, 8.0, 10.5 + kT, kH},
+      // Corridor's south wall at y = 6 with two openings into the hall.
+      {0, 6.0, 4.0, 6.0 + kT}, {5.2, 6.0, 11.0, 6.0 + kT}, {12.2, 6.0, kW, 6.0 + kT},
+      // A store room in the hall's south-east corner, door on its west side.
+      {11.0, 0, 11.0 + kT, 1.2}, {11.0, 2.2, 11.0 + kT, 6.0},
+      // A pillar and a long table in the hall.
+      {3.0, 2.5, 3.6, 3.1}, {6.0, 1.5, 9.0, 2.3}};
+  return rasterize_boxes(walls, kW, kH, resolution_m, "builtin:office");
+}
+
+World labyrinth(double resolution_m) {
+  constexpr double kT = 0.2;
+  const std::vector<Box> walls = {
+      {0, 0, 8, kT},       {0, 8 - kT, 8, 8},   {0, 0, kT, 8},       {8 - kT, 0, 8, 8},
+      {2, 0, 2 + kT, 6},   {4, 2, 4 + kT, 8},   {6, 0, 6 + kT, 6},   {2, 6, 3, 6 + kT},
+      {4, 2, 5, 2 + kT},   {6.5, 4, 8, 4 + kT}, {0.2, 3, 1, 3 + kT}};
+  return rasterize_boxes(walls, 8.0, 8.0, resolution_m, "builtin:labyrinth");
+}
+
+}  // namespace
+
+std::vector<std::string> builtin_world_names() { return {"office", "labyrinth"}; }
+
+World builtin_world(const std::string& name, double resolution_m) {
+  if (name == "office") return office(resolution_m);
+  if (name == "labyrinth") return labyrinth(resolution_m);
+  return World();
+}
+
+}  // namespace tessera

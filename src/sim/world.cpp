@@ -1,0 +1,98 @@
+#include "tessera/sim/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "tessera/core/assert.hpp"
+#include "tessera/grid/ray_cast.hpp"
+
+namespace tessera {
+
+World::World(const GridGeometry& geometry, std::vector<std::uint8_t> solid, std::string name)
+    : geometry_(geometry), solid_(std::move(solid)), name_(std::move(name)) {
+  TESSERA_ASSERT(solid_.size() == geometry_.size());
+}
+
+World World::from_map(const OccupancyGrid& map, double free_below, std::string name) {
+  const GridGeometry& geometry = map.geometry();
+  std::vector<std::uint8_t> solid(geometry.size(), 1);
+  for (std::size_t i = 0; i < solid.size(); ++i) {
+    const std::optional<double> p = map.probability_at(geometry.cell_of(i));
+    if (p.has_value() && *p < free_below) solid[i] = 0;
+  }
+  return World(geometry, std::move(solid), std::move(name));
+}
+
+std::size_t World::free_count() const {
+  return static_cast<std::size_t>(std::count(solid_.begin(), solid_.end(), std::uint8_t{0}));
+}
+
+World World::resampled(double resolution_m) const {
+  TESSERA_ASSERT(resolution_m > 0.0);
+  // ratio = coarse cell size in fine cells. A tolerance keeps exact multiples (0.05 -> 0.1) from
+  // picking up a neighbour through rounding.
+  constexpr double kTol = 1e-9;
+  const double ratio = resolution_m / geometry_.resolution_m();
+  const auto cells_covering = [&](int fine_cells) {
+    return static_cast<int>(std::ceil(static_cast<double>(fine_cells) / ratio - kTol));
+  };
+  const GridGeometry coarse(geometry_.origin(), resolution_m, cells_covering(geometry_.width()),
+                            cells_covering(geometry_.height()));
+  // Fine cells overlapping coarse cell i with positive length along one axis: [lo, hi].
+  const auto fine_range = [&](int i) {
+    const int lo = static_cast<int>(std::floor(i * ratio + kTol));
+    const int hi = static_cast<int>(std::ceil((i + 1) * ratio - kTol)) - 1;
+    return std::pair<int, int>{lo, std::max(lo, hi)};
+  };
+  std::vector<std::uint8_t> solid(coarse.size(), 0);
+  for (int cy = 0; cy < coarse.height(); ++cy) {
+    const auto [y_lo, y_hi] = fine_range(cy);
+    for (int cx = 0; cx < coarse.width(); ++cx) {
+      const auto [x_lo, x_hi] = fine_range(cx);
+      // Any-solid pooling; fine cells beyond the source grid count as solid (World::solid).
+      bool any = false;
+      for (int y = y_lo; y <= y_hi && !any; ++y) {
+        for (int x = x_lo; x <= x_hi && !any; ++x) any = this->solid({x, y});
+      }
+      solid[coarse.index_of({cx, cy})] = any ? 1 : 0;
+    }
+  }
+  return World(coarse, std::move(solid), name_);
+}
+
+double World::cast_ray(Vec2 from_m, double angle_rad, double max_range_m) const {
+  TESSERA_ASSERT(max_range_m >= 0.0);
+  const Vec2 to_m = from_m + Vec2{std::cos(angle_rad), std::sin(angle_rad)} * max_range_m;
+  double hit_m = max_range_m;
+  traverse_ray(geometry_, from_m, to_m, [&](Cell c, double t_enter_m, double) {
+    if (!solid(c)) return true;
+    hit_m = t_enter_m;  // the ray enters the first solid cell here (0 when it starts in one)
+    return false;
+  });
+  return std::min(hit_m, max_range_m);
+}
+
+std::vector<std::uint8_t> World::reachable_from(Cell start) const {
+  std::vector<std::uint8_t> reached(geometry_.size(), 0);
+  if (solid(start)) return reached;  // also covers a start outside the grid
+  // Breadth-first flood fill over 4-neighbours (the lecture robot's moves).
+  std::vector<Cell> queue;
+  queue.reserve(64);
+  reached[geometry_.index_of(start)] = 1;
+  queue.push_back(start);
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const Cell c = queue[head];
+    for (const Cell d : kNeighbors4) {
+      const Cell n = c + d;
+      if (solid(n)) continue;
+      std::uint8_t& r = reached[geometry_.index_of(n)];
+      if (r != 0) continue;
+      r = 1;
+      queue.push_back(n);
+    }
+  }
+  return reached;
+}
+
+}  // namespace tessera

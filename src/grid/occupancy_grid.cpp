@@ -28,12 +28,6 @@ void OccupancyGrid::set_unknown(Cell c) {
   known_[i] = 0;
 }
 
-void OccupancyGrid::add_log_odds(Cell c, float delta, float clamp_min, float clamp_max) {
-  const std::size_t i = geometry_.index_of(c);
-  log_odds_[i] = std::clamp(log_odds_[i] + delta, clamp_min, clamp_max);
-  known_[i] = 1;
-}
-
 void OccupancyGrid::apply_hit(Cell c, const SensorModelOptions& model) {
   add_log_odds(c, log_odds(model.p_hit), log_odds(model.p_clamp_min), log_odds(model.p_clamp_max));
 }

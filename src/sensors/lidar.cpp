@@ -84,11 +84,15 @@ void insert_scan(OccupancyGrid& map, const Pose2& T_map_sensor, const RangeScan&
     const Vec2 dir{std::cos(angle), std::sin(angle)};
     const double range_m = no_return ? scan.max_range_m : r;
 
-    // The hit cell, if any: the cell holding the return (a hair beyond it, see kHitEpsilonM).
+    // The hit cell, if any: the cell holding the point free_margin_m beyond the return. Noise can
+    // put a return up to the margin short of the wall; looking that far ahead keeps the hit in the
+    // wall cell instead of darkening the free cell in front of it, which would otherwise get a hit
+    // from every short reading and end up occupied (kHitEpsilonM handles margin 0).
     Cell hit_cell{};
     bool has_hit = false;
     if (!no_return) {
-      hit_cell = geometry.cell_at_unchecked(origin_m + dir * (range_m + kHitEpsilonM));
+      hit_cell = geometry.cell_at_unchecked(
+          origin_m + dir * (range_m + options.free_margin_m + kHitEpsilonM));
       has_hit = true;
     }
 

@@ -113,12 +113,12 @@ TEST(InsertScan, ShortAndLongReadingsNearTheWallMoveOnlyTheHitNotTheMisses) {
   insert_scan(map, {1.25, 1.75, 0.0}, one_beam(2.27), {}, nullptr);
   EXPECT_FLOAT_EQ(map.log_odds_at({7, 3}), log_odds(0.7));
   EXPECT_EQ(map.state({6, 3}), CellState::kFree);
-  // Slightly short, 2.23: the return lies in (6, 3), which is hit; (7, 3) is not entered
-  // at least 0.03 before the range, so it is untouched.
+  // Slightly short, 2.23: the hit is looked up free_margin_m beyond the return, so it still goes
+  // to the wall cell (7, 3) and the free cell (6, 3) in front of the wall stays free.
   OccupancyGrid short_map(kGeometry);
   insert_scan(short_map, {1.25, 1.75, 0.0}, one_beam(2.23), {}, nullptr);
-  EXPECT_EQ(short_map.state({6, 3}), CellState::kOccupied);
-  EXPECT_EQ(short_map.state({7, 3}), CellState::kUnknown);
+  EXPECT_EQ(short_map.state({7, 3}), CellState::kOccupied);
+  EXPECT_EQ(short_map.state({6, 3}), CellState::kFree);
   // Long, 2.30: nothing behind the wall is cleared; (8, 3) is not even entered before 2.75.
   OccupancyGrid long_map(kGeometry);
   insert_scan(long_map, {1.25, 1.75, 0.0}, one_beam(2.30), {}, nullptr);

@@ -68,7 +68,12 @@ class OccupancyGrid {
   /// Forgets what is known about a cell.
   void set_unknown(Cell c);
   /// Adds log-odds evidence and clamps to the model's range; the cell becomes known.
-  void add_log_odds(Cell c, float delta, float clamp_min, float clamp_max);
+  void add_log_odds(Cell c, float delta, float clamp_min, float clamp_max) {
+    const std::size_t i = geometry_.index_of(c);
+    const float v = log_odds_[i] + delta;
+    log_odds_[i] = v < clamp_min ? clamp_min : (v > clamp_max ? clamp_max : v);
+    known_[i] = 1;
+  }
   void apply_hit(Cell c, const SensorModelOptions& model);
   void apply_miss(Cell c, const SensorModelOptions& model);
 

@@ -33,18 +33,21 @@ struct LidarOptions {
 /// How a scan updates an occupancy grid (the inverse sensor model).
 struct ScanInsertOptions {
   SensorModelOptions model;
-  /// A cell gets a miss only if the beam enters it at least this far before the measured range, so
-  /// that range noise cannot mark the wall cell behind a short reading free (errors fall on the
-  /// safe side). About 3 sigma of the range noise.
+  /// The range uncertainty band. A cell gets a miss only if the beam enters it at least this far
+  /// before the measured range, so that a long reading cannot clear the wall cell it ran into; the
+  /// hit goes to the cell holding the point this far beyond the range, so that a short reading
+  /// does not darken the free cell in front of the wall. The simulator truncates range noise at
+  /// 3 sigma, so a margin above 3 sigma makes the first impossible (errors fall on the safe side);
+  /// the default suits the default 0.01 m noise.
   double free_margin_m = 0.0301;
 };
 
 /// Ray-cast update of `map` with one scan taken at T_map_sensor: the cell holding each return gets
 /// a hit, cells the beam crossed before it get a miss (see free_margin_m); no-return beams only
 /// clear up to max range (cells entered at least free_margin_m before it, since a wall just beyond
-/// the range could read as "no return" with noise). The hit cell is the one containing the point a
-/// hair (1e-9 m) beyond the range, so a return exactly on a cell border lands in the wall cell
-/// behind it. Ranges below min_range_m, and NaN, are invalid and skipped. Cells outside the map are
+/// the range could read as "no return" with noise). The hit cell is the one containing the point
+/// free_margin_m (plus 1e-9 m) beyond the range, so a return exactly on a cell border lands in the
+/// wall cell behind it. Ranges below min_range_m, and NaN, are invalid and skipped. Cells outside the map are
 /// ignored. Every cell whose value changed or that became known is appended to `touched` when it is
 /// not null (cells may repeat). Traversal is exact (Amanatides & Woo, grid/ray_cast.hpp); log-odds
 /// deltas are computed once per call. Cost: O(beams * max_range / resolution).

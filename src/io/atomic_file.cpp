@@ -1,0 +1,101 @@
+#include "tessera/io/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace tessera {
+namespace {
+
+std::filesystem::path temp_path_for(const std::filesystem::path& path) {
+  std::filesystem::path tmp = path;
+  tmp += ".tmp-" + std::to_string(static_cast<long long>(::getpid()));
+  return tmp;
+}
+
+// Writes and fsyncs `bytes` into a fresh `tmp`. Leaves nothing behind on failure.
+Status write_temp(const std::filesystem::path& tmp, const std::filesystem::path& target,
+                  std::string_view bytes) {
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    return runtime_error(target.string() + ": cannot write: " + std::strerror(errno));
+  }
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const std::string reason = std::strerror(errno);
+      ::close(fd);
+      ::unlink(tmp.c_str());
+      return runtime_error(target.string() + ": cannot write: " + reason);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) {
+    const std::string reason = std::strerror(errno);
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    return runtime_error(target.string() + ": cannot write: " + reason);
+  }
+  if (::close(fd) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::unlink(tmp.c_str());
+    return runtime_error(target.string() + ": cannot write: " + reason);
+  }
+  return Ok{};
+}
+
+}  // namespace
+
+Status write_file_atomic(const std::filesystem::path& path, std::string_view bytes) {
+  const PendingFile file{path, bytes};
+  return write_files_atomic(std::span<const PendingFile>(&file, 1));
+}
+
+Status write_files_atomic(std::span<const PendingFile> files) {
+  std::vector<std::filesystem::path> temps;
+  temps.reserve(files.size());
+  const auto remove_temps = [&temps](std::size_t from) {
+    for (std::size_t i = from; i < temps.size(); ++i) ::unlink(temps[i].c_str());
+  };
+  for (const PendingFile& f : files) {
+    if (f.path.empty() || !f.path.has_filename()) {
+      remove_temps(0);
+      return runtime_error("'" + f.path.string() + "': cannot write: not a file name");
+    }
+    std::filesystem::path tmp = temp_path_for(f.path);
+    if (Status s = write_temp(tmp, f.path, f.bytes); !s) {
+      remove_temps(0);
+      return s;
+    }
+    temps.push_back(std::move(tmp));
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (::rename(temps[i].c_str(), files[i].path.c_str()) != 0) {
+      const std::string reason = std::strerror(errno);
+      remove_temps(i);
+      return runtime_error(files[i].path.string() + ": cannot write: " + reason);
+    }
+  }
+  return Ok{};
+}
+
+Status ensure_directory(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(dir, ec)) return Ok{};
+  if (std::filesystem::exists(dir, ec)) {
+    return runtime_error(dir.string() + ": cannot create directory: a file is in the way");
+  }
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return runtime_error(dir.string() + ": cannot create directory: " + ec.message());
+  return Ok{};
+}
+
+}  // namespace tessera

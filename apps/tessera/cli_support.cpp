@@ -1,0 +1,79 @@
+#include "cli_support.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <sstream>
+
+#include "tessera/io/map_file.hpp"
+#include "tessera/sim/builtin_world.hpp"
+
+namespace tessera::cli {
+
+int exit_code(const Error& e) {
+  switch (e.kind) {
+    case ErrorKind::kUsage:
+      return kExitUsage;
+    case ErrorKind::kInput:
+      return kExitInput;
+    case ErrorKind::kRuntime:
+      return kExitRuntime;
+  }
+  return kExitRuntime;
+}
+
+int report_error(const Error& e) {
+  fmt::print(stderr, "tessera: {}\n", e.message);
+  return exit_code(e);
+}
+
+bool stderr_is_terminal() { return isatty(fileno(stderr)) != 0; }
+
+ProgressLine::ProgressLine(bool enabled)
+    : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+
+ProgressLine::~ProgressLine() { finish(); }
+
+void ProgressLine::show(const std::string& text) {
+  if (!enabled_) return;
+  if (!shown_ && std::chrono::steady_clock::now() - start_ < std::chrono::seconds(1)) return;
+  fmt::print(stderr, "\r\033[K{}", text);
+  std::fflush(stderr);
+  shown_ = true;
+}
+
+void ProgressLine::finish() {
+  if (shown_) fmt::print(stderr, "\r\033[K");
+  shown_ = false;
+}
+
+Result<World> load_world(const WorldSource& source, double builtin_resolution_m) {
+  if (!source.file) {
+    World w = builtin_world(source.builtin, builtin_resolution_m);
+    if (w.geometry().size() == 0) {
+      std::string names;
+      for (const auto& n : builtin_world_names()) names += (names.empty() ? "" : ", ") + n;
+      return usage_error(fmt::format("unknown built-in world '{}' (built-in worlds: {})",
+                                     source.builtin, names));
+    }
+    return w;
+  }
+  MapLoadOptions options;
+  options.resolution_m = source.map_resolution_m;
+  Result<LoadedMap> loaded = load_map(*source.file, options);
+  if (!loaded) return loaded.error();
+  return World::from_map(loaded->map, 0.5, source.file->string());
+}
+
+Result<Vec2> parse_point(const std::string& text, const std::string& option) {
+  std::istringstream in(text);
+  Vec2 p;
+  char comma = 0;
+  if (!(in >> p.x >> comma >> p.y) || comma != ',' || !(in >> std::ws).eof()) {
+    return usage_error(fmt::format("{} expects X,Y in metres, got '{}'", option, text));
+  }
+  return p;
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,53 @@
+#pragma once
+// Glue shared by the subcommands: exit codes, error lines, progress on a terminal, loading a world.
+#include <chrono>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "tessera/core/result.hpp"
+#include "tessera/sim/world.hpp"
+
+namespace tessera::cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitUsage = 2;
+inline constexpr int kExitInput = 3;
+inline constexpr int kExitRuntime = 4;
+
+/// 2 usage, 3 input, 4 runtime.
+[[nodiscard]] int exit_code(const Error& e);
+/// Prints "tessera: <message>" on stderr and returns exit_code(e).
+int report_error(const Error& e);
+
+/// True when stderr is a terminal (progress lines are shown only there).
+[[nodiscard]] bool stderr_is_terminal();
+
+/// A one-line progress display that appears only on a terminal, only after the run has lasted a
+/// second, and is erased when done.
+class ProgressLine {
+ public:
+  explicit ProgressLine(bool enabled);
+  ~ProgressLine();
+  void show(const std::string& text);
+  void finish();
+
+ private:
+  bool enabled_;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point start_;
+};
+
+struct WorldSource {
+  std::optional<std::filesystem::path> file;  // empty: the built-in world
+  std::string builtin = "office";
+  std::optional<double> map_resolution_m;  // for files that carry none (images, Moving AI)
+};
+
+/// Loads the ground-truth world from a map file (any format io::load_map reads) or a built-in one.
+[[nodiscard]] Result<World> load_world(const WorldSource& source, double builtin_resolution_m);
+
+/// "3.5,2" -> {3.5, 2}; usage error otherwise.
+[[nodiscard]] Result<Vec2> parse_point(const std::string& text, const std::string& option);
+
+}  // namespace tessera::cli

@@ -1,0 +1,30 @@
+// tessera: the command-line program. Every subcommand is thin glue over the library
+// (cmd_<name>.cpp parses into an options struct, calls the library, writes through io).
+#include <CLI/CLI.hpp>
+
+#include "cli_support.hpp"
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  using namespace tessera::cli;
+  CLI::App app{"tessera: 2D indoor mapping, exploration and SLAM for mobile robots"};
+  app.set_version_flag("--version", TESSERA_VERSION);
+  app.require_subcommand(1);
+
+  ExploreCommand explore(app);
+  RenderCommand render(app);
+  InfoCommand info(app);
+  ConvertCommand convert(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitUsage;
+  }
+  if (explore.parsed()) return explore.run();
+  if (render.parsed()) return render.run();
+  if (info.parsed()) return info.run();
+  if (convert.parsed()) return convert.run();
+  return kExitUsage;
+}

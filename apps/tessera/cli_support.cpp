@@ -54,8 +54,8 @@ Result<World> load_world(const WorldSource& source, double builtin_resolution_m)
     if (w.geometry().size() == 0) {
       std::string names;
       for (const auto& n : builtin_world_names()) names += (names.empty() ? "" : ", ") + n;
-      return usage_error(fmt::format("unknown built-in world '{}' (built-in worlds: {})",
-                                     source.builtin, names));
+      return usage_error(
+          fmt::format("unknown built-in world '{}' (built-in worlds: {})", source.builtin, names));
     }
     return w;
   }

@@ -44,8 +44,9 @@ ExploreCommand::ExploreCommand(CLI::App& app) {
                    "world's own)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  sub_->add_option("--start", start_, "Start of the first robot, X,Y in metres (default: the free "
-                                      "cell nearest the centre of the largest free area)");
+  sub_->add_option("--start", start_,
+                   "Start of the first robot, X,Y in metres (default: the free "
+                   "cell nearest the centre of the largest free area)");
   sub_->add_option("--lidar-range-m", lidar_range_m_, "Lidar maximum range")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -73,8 +74,8 @@ int ExploreCommand::run() const {
   }
 
   ExplorationMissionOptions options;
-  options.strategy = strategy_ == "priority" ? FrontierStrategy::kPriority
-                                             : FrontierStrategy::kNearest;
+  options.strategy =
+      strategy_ == "priority" ? FrontierStrategy::kPriority : FrontierStrategy::kNearest;
   options.robots = robots_;
   options.sensor = sensor_ == "lidar" ? RobotKind::kLidar : RobotKind::kCell;
   options.lidar.max_range_m = lidar_range_m_;
@@ -100,7 +101,8 @@ int ExploreCommand::run() const {
                                   100.0 * p.coverage, p.frontier_size));
       });
   progress.finish();
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!result) {
     // Name the world in input errors ("maps/lab.yaml: start (3, 4) is inside an obstacle").
     Error e = result.error();
@@ -139,10 +141,14 @@ int ExploreCommand::run() const {
   ExplorationReportContext context;
   context.seed = seed_;
   context.world_file = world_.file ? world_.file->string() : "builtin:" + world_.builtin;
-  context.options = {{"strategy", strategy_},       {"robots", robots_},
-                     {"sensor", sensor_},           {"resolution_m", world.geometry().resolution_m()},
-                     {"low", low_},                 {"lidar_range_m", lidar_range_m_},
-                     {"lidar_beams", lidar_beams_}, {"range_noise_m", range_noise_m_},
+  context.options = {{"strategy", strategy_},
+                     {"robots", robots_},
+                     {"sensor", sensor_},
+                     {"resolution_m", world.geometry().resolution_m()},
+                     {"low", low_},
+                     {"lidar_range_m", lidar_range_m_},
+                     {"lidar_beams", lidar_beams_},
+                     {"range_noise_m", range_noise_m_},
                      {"max_steps", max_steps_}};
   context.wall_s = wall_s;
   if (Status s = write_json_atomic(out_ / "report.json", exploration_report(r, world, context));
@@ -152,12 +158,12 @@ int ExploreCommand::run() const {
 
   if (!quiet_) {
     const auto& m = r.metrics;
-    fmt::print("explore: {} robot(s), {} steps, coverage {:.2f}%, path {:.1f} m, {} turns, "
-               "occupied-as-empty {} ({})\n",
-               m.robots, m.steps, 100.0 * m.coverage, m.path_length_m, m.turns,
-               r.accuracy.occupied_as_empty, m.stop_reason);
-    fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt report.json\n",
-               out_.string());
+    fmt::print(
+        "explore: {} robot(s), {} steps, coverage {:.2f}%, path {:.1f} m, {} turns, "
+        "occupied-as-empty {} ({})\n",
+        m.robots, m.steps, 100.0 * m.coverage, m.path_length_m, m.turns,
+        r.accuracy.occupied_as_empty, m.stop_reason);
+    fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt report.json\n", out_.string());
   }
   return kExitOk;
 }

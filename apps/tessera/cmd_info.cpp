@@ -27,9 +27,15 @@ int InfoCommand::run() const {
   for (int y = 0; y < g.height(); ++y) {
     for (int x = 0; x < g.width(); ++x) {
       switch (map.state({x, y})) {
-        case CellState::kFree: ++free; break;
-        case CellState::kOccupied: ++occupied; break;
-        case CellState::kUnknown: ++unknown; break;
+        case CellState::kFree:
+          ++free;
+          break;
+        case CellState::kOccupied:
+          ++occupied;
+          break;
+        case CellState::kUnknown:
+          ++unknown;
+          break;
       }
     }
   }

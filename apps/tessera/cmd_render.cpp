@@ -6,7 +6,8 @@
 namespace tessera::cli {
 
 RenderCommand::RenderCommand(CLI::App& app) {
-  sub_ = app.add_subcommand("render", "Draw a map as PNG, with trajectories and ground-truth errors");
+  sub_ =
+      app.add_subcommand("render", "Draw a map as PNG, with trajectories and ground-truth errors");
   sub_->add_option("map", map_, "Map file (any format tessera reads)")->required();
   sub_->add_option("--out", out_, "PNG file to write")->required();
   sub_->add_option("--map-resolution-m", map_resolution_m_,

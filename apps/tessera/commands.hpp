@@ -2,7 +2,6 @@
 // The subcommands. Each registers its options with CLI11 in its constructor and runs with run(),
 // which returns the process exit code (0 ok, 2 usage, 3 input, 4 runtime).
 #include <CLI/CLI.hpp>
-
 #include <cstdint>
 #include <filesystem>
 #include <optional>

@@ -168,10 +168,10 @@ BENCHMARK(BM_FrontierUpdateFull)
     ->Arg(300)
     ->Unit(benchmark::kMicrosecond);
 
-// Every step of a whole exploration, not a chosen one: a lidar robot's path over the full-resolution
-// warehouse is replayed scan by scan, and each step's touched cells go through FrontierSet::update
-// (timed at every step) while compute_frontier is timed on the same map every 25th step. The
-// counters are the mean per step of each, over the same run.
+// Every step of a whole exploration, not a chosen one: a lidar robot's path over the
+// full-resolution warehouse is replayed scan by scan, and each step's touched cells go through
+// FrontierSet::update (timed at every step) while compute_frontier is timed on the same map every
+// 25th step. The counters are the mean per step of each, over the same run.
 void BM_FrontierUpdateWholeRun(benchmark::State& state) {
   std::string why;
   const std::optional<World>& world = warehouse(&why);
@@ -225,7 +225,8 @@ void BM_FrontierUpdateWholeRun(benchmark::State& state) {
         }
       }
     }
-    const double inc_per_step = incremental_s / static_cast<double>(std::max<std::int64_t>(steps, 1));
+    const double inc_per_step =
+        incremental_s / static_cast<double>(std::max<std::int64_t>(steps, 1));
     const double full_per_step = full_s / static_cast<double>(std::max<std::int64_t>(full_runs, 1));
     state.counters["cells"] = static_cast<double>(world->geometry().size());
     state.counters["steps"] = static_cast<double>(steps);

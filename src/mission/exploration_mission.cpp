@@ -20,6 +20,7 @@ constexpr int kMaxRobots = 64;
 constexpr std::int64_t kSafetyStepsPerFreeCell = 50;
 constexpr std::int64_t kMaxIdleBackoffSteps = 32;
 constexpr std::size_t kMaxSeriesSamples = 8192;
+constexpr std::uint8_t kMaxTargetChoices = 3;
 
 std::string cell_text(Cell c) {
   return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
@@ -192,12 +193,27 @@ Result<ExplorationResult> run_exploration(
   const float low_log_odds = log_odds(o.low);
 
   std::vector<Cell> touched;
+  // Cells a robot has stood in: free for certain (BOBMapping 3.1: "a cell the robot has stood in
+  // can never become occupied"). A grazing lidar return can otherwise darken the one-cell passage a
+  // robot came through and shut it in.
+  std::vector<std::uint8_t> stood_in(geometry.size(), 0);
+  const double stood_in_p =
+      o.sensor == RobotKind::kCell ? o.cell_sensor.p_free : o.scan_insert.model.p_clamp_min;
+  const auto keep_stood_in_cells_free = [&] {
+    for (const Cell c : touched) {
+      if (stood_in[geometry.index_of(c)] != 0 && !map.is_free_below(c, low_log_odds)) {
+        map.set_probability(c, stood_in_p);
+      }
+    }
+  };
   const auto apply_touched = [&] {
+    keep_stood_in_cells_free();
     frontier.update(map, touched);
     coverage.update(map, touched);
   };
   // Algo 9.1 lines 10-12: sense, and mark the grid with occupancy probabilities.
   const auto sense = [&](int r) {
+    stood_in[geometry.index_of(sim.cell(r))] = 1;
     touched.clear();
     if (o.sensor == RobotKind::kCell) {
       insert_cell_reading(map, sim.sense_cells(r), o.cell_sensor, &touched);
@@ -233,6 +249,7 @@ Result<ExplorationResult> run_exploration(
   }
 
   std::int64_t step = 0;
+  std::vector<std::uint8_t> times_chosen(geometry.size(), 0);
   const auto needs_plan = [&](int r) {
     const RobotState& s = state[static_cast<std::size_t>(r)];
     if (!s.plan.has_value()) return true;  // idle: cheap unless the map or the claims changed
@@ -250,6 +267,13 @@ Result<ExplorationResult> run_exploration(
       // frontier cell under it cannot be resolved by going there.
       if (p.has_value() && p->target == here) {
         explorer.blacklist(here);
+        continue;
+      }
+      // A noisy reading can flip a cell at a wall between free and occupied; each time it turns
+      // free it is a frontier again (the wall behind it is never seen) and used to draw the robot
+      // back. A cell chosen as a target more than kMaxTargetChoices times is given up on.
+      if (p.has_value() && ++times_chosen[geometry.index_of(p->target)] > kMaxTargetChoices) {
+        explorer.blacklist(p->target);
         continue;
       }
       s.plan = std::move(p);

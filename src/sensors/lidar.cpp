@@ -13,6 +13,8 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 /// border lands in the wall cell behind it rather than in the free cell in front. Far above the
 /// rounding of the traversal (~1e-15 m at map scale), far below any cell size.
 constexpr double kHitEpsilonM = 1e-9;
+/// A traversed length below this is a corner touch, not a crossing (see insert_scan).
+constexpr double kCornerTouchM = 1e-6;
 
 }  // namespace
 
@@ -91,8 +93,8 @@ void insert_scan(OccupancyGrid& map, const Pose2& T_map_sensor, const RangeScan&
     Cell hit_cell{};
     bool has_hit = false;
     if (!no_return) {
-      hit_cell = geometry.cell_at_unchecked(
-          origin_m + dir * (range_m + options.free_margin_m + kHitEpsilonM));
+      hit_cell = geometry.cell_at_unchecked(origin_m +
+                                            dir * (range_m + options.free_margin_m + kHitEpsilonM));
       has_hit = true;
     }
 
@@ -101,13 +103,18 @@ void insert_scan(OccupancyGrid& map, const Pose2& T_map_sensor, const RangeScan&
     const double clear_m = range_m - options.free_margin_m;
     if (clear_m >= 0.0) {
       bool entered = false;
-      traverse_ray(geometry, origin_m, origin_m + dir * clear_m, [&](Cell c, double, double) {
-        // The grid is convex: once the beam has left it, it cannot come back.
-        if (!geometry.contains(c)) return !entered;
-        entered = true;
-        if (!(has_hit && c == hit_cell)) update(c, miss);  // skip a long reading's wall cell
-        return true;
-      });
+      traverse_ray(geometry, origin_m, origin_m + dir * clear_m,
+                   [&](Cell c, double t_enter_m, double t_exit_m) {
+                     // The grid is convex: once the beam has left it, it cannot come back.
+                     if (!geometry.contains(c)) return !entered;
+                     entered = true;
+                     // A cell the beam only touches at a corner is not evidence of free space:
+                     // which of the two cells at an exact corner a traversal visits depends on
+                     // rounding, and the other one may be the solid cell the beam squeezed past.
+                     if (t_exit_m - t_enter_m < kCornerTouchM) return true;
+                     if (!(has_hit && c == hit_cell)) update(c, miss);  // a long reading's wall
+                     return true;
+                   });
     }
     if (has_hit && geometry.contains(hit_cell)) update(hit_cell, hit);
   }

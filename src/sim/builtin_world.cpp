@@ -36,27 +36,37 @@ World office(double resolution_m) {
   constexpr double kW = 16.0, kH = 12.0, kT = 0.2;  // extent and wall thickness
   const std::vector<Box> walls = {
       // Outer walls.
-      {0, 0, kW, kT}, {0, kH - kT, kW, kH}, {0, 0, kT, kH}, {kW - kT, 0, kW, kH},
+      {0, 0, kW, kT},
+      {0, kH - kT, kW, kH},
+      {0, 0, kT, kH},
+      {kW - kT, 0, kW, kH},
       // Corridor's north wall at y = 8 with a door into each of the three rooms above.
-      {0, 8.0, 2.0, 8.0 + kT}, {3.0, 8.0, 7.0, 8.0 + kT}, {8.0, 8.0, 12.0, 8.0 + kT},
+      {0, 8.0, 2.0, 8.0 + kT},
+      {3.0, 8.0, 7.0, 8.0 + kT},
+      {8.0, 8.0, 12.0, 8.0 + kT},
       {13.0, 8.0, kW, 8.0 + kT},
       // Walls between the rooms above the corridor.
-      {5.0, 8.0, 5.0 + kT, kH}, {10.5, 8.0, 10.5 + kT, kH},
+      {5.0, 8.0, 5.0 + kT, kH},
+      {10.5, 8.0, 10.5 + kT, kH},
       // Corridor's south wall at y = 6 with two openings into the hall.
-      {0, 6.0, 4.0, 6.0 + kT}, {5.2, 6.0, 11.0, 6.0 + kT}, {12.2, 6.0, kW, 6.0 + kT},
+      {0, 6.0, 4.0, 6.0 + kT},
+      {5.2, 6.0, 11.0, 6.0 + kT},
+      {12.2, 6.0, kW, 6.0 + kT},
       // A store room in the hall's south-east corner, door on its west side.
-      {11.0, 0, 11.0 + kT, 1.2}, {11.0, 2.2, 11.0 + kT, 6.0},
+      {11.0, 0, 11.0 + kT, 1.2},
+      {11.0, 2.2, 11.0 + kT, 6.0},
       // A pillar and a long table in the hall.
-      {3.0, 2.5, 3.6, 3.1}, {6.0, 1.5, 9.0, 2.3}};
+      {3.0, 2.5, 3.6, 3.1},
+      {6.0, 1.5, 9.0, 2.3}};
   return rasterize_boxes(walls, kW, kH, resolution_m, "builtin:office");
 }
 
 World labyrinth(double resolution_m) {
   constexpr double kT = 0.2;
-  const std::vector<Box> walls = {
-      {0, 0, 8, kT},       {0, 8 - kT, 8, 8},   {0, 0, kT, 8},       {8 - kT, 0, 8, 8},
-      {2, 0, 2 + kT, 6},   {4, 2, 4 + kT, 8},   {6, 0, 6 + kT, 6},   {2, 6, 3, 6 + kT},
-      {4, 2, 5, 2 + kT},   {6.5, 4, 8, 4 + kT}, {0.2, 3, 1, 3 + kT}};
+  const std::vector<Box> walls = {{0, 0, 8, kT},       {0, 8 - kT, 8, 8},  {0, 0, kT, 8},
+                                  {8 - kT, 0, 8, 8},   {2, 0, 2 + kT, 6},  {4, 2, 4 + kT, 8},
+                                  {6, 0, 6 + kT, 6},   {2, 6, 3, 6 + kT},  {4, 2, 5, 2 + kT},
+                                  {6.5, 4, 8, 4 + kT}, {0.2, 3, 1, 3 + kT}};
   return rasterize_boxes(walls, 8.0, 8.0, resolution_m, "builtin:labyrinth");
 }
 

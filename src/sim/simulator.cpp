@@ -127,7 +127,8 @@ RangeScan Simulator::scan(int robot) {
     // Truncated at 3 sigma, like a datasheet's maximum range error: with
     // ScanInsertOptions::free_margin_m >= 3 sigma no beam can ever clear the wall cell it hit.
     const double bound_m = 3.0 * lidar.range_noise_stddev_m;
-    const double noise_m = std::clamp(r.rng.gaussian(lidar.range_noise_stddev_m), -bound_m, bound_m);
+    const double noise_m =
+        std::clamp(r.rng.gaussian(lidar.range_noise_stddev_m), -bound_m, bound_m);
     // A beam that hits nothing reports max range: no return, and no noise on it.
     scan.ranges_m[i] = truth_m >= lidar.max_range_m
                            ? lidar.max_range_m

@@ -28,8 +28,7 @@ int count_lines(const std::string& s) {
 void expect_input_error(const TempDir& dir, const std::string& world_args,
                         const std::string& file_mentioned, const std::string& problem) {
   const auto out = dir.path() / "out";
-  const support::CliRun run =
-      run_cli("explore " + world_args + " --quiet --out " + out.string());
+  const support::CliRun run = run_cli("explore " + world_args + " --quiet --out " + out.string());
   EXPECT_EQ(run.exit_code, 3) << run.output;
   EXPECT_EQ(count_lines(run.output), 1) << run.output;
   EXPECT_THAT(run.output, HasSubstr(file_mentioned));

@@ -76,9 +76,9 @@ TEST(CliExplore, ExploredMapCanBeRenderedDescribedAndConverted) {
   EXPECT_THAT(info.output, HasSubstr("80 x 80 cells"));
 
   const auto png = dir.path() / "r.png";
-  const support::CliRun render = run_cli("render " + (out / "map.yaml").string() + " --out " +
-                                         png.string() + " --trajectory " +
-                                         (out / "trajectory.txt").string());
+  const support::CliRun render =
+      run_cli("render " + (out / "map.yaml").string() + " --out " + png.string() +
+              " --trajectory " + (out / "trajectory.txt").string());
   ASSERT_EQ(render.exit_code, 0) << render.output;
   EXPECT_EQ(read_text(png).substr(1, 3), "PNG");
 

@@ -50,5 +50,28 @@ TEST(ExplorationRealMap, NoisyLidarRobotExploresTurtlebot3WorldWithoutMappingObs
   EXPECT_GT(r->metrics.coverage, 0.99);
 }
 
+// Willow Garage (a real SLAM map with cluttered one-cell passages): before corner touches were
+// kept out of the miss update and stood-in cells were kept free, a lidar robot shut itself into a
+// pocket here and stopped at 38% coverage, with one wall cell mapped free.
+TEST(ExplorationRealMap, LidarRobotExploresClutteredWillowGarageAndCanAlwaysGoBack) {
+  const auto file =
+      support::data_path("maps/ros_map_server/willow_navigation_tutorials/willow-full.pgm");
+  TESSERA_REQUIRE_DATA(file);
+  Result<LoadedMap> loaded = load_map(file, MapLoadOptions{0.1});
+  ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+  const World world = World::from_map(loaded->map);
+  ExplorationMissionOptions o;
+  o.sensor = RobotKind::kLidar;
+  const Result<ExplorationResult> r = run_exploration(world, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->metrics.stop_reason, kStopNoReachableFrontier);
+  EXPECT_EQ(r->accuracy.occupied_as_empty, 0u);
+  EXPECT_GT(r->metrics.coverage, 0.99);
+  for (const Pose2& p : r->paths.front()) {
+    const Cell c = world.geometry().cell_at_unchecked(p.translation());
+    ASSERT_EQ(r->map.state(c), CellState::kFree) << "stood-in cell (" << c.x << ", " << c.y << ")";
+  }
+}
+
 }  // namespace
 }  // namespace tessera

@@ -106,6 +106,19 @@ TEST(InsertScan, ReturnExactlyOnACellBorderLandsInTheWallCellWhateverTheDirectio
   EXPECT_EQ(up.state({2, 3}), CellState::kFree);
 }
 
+TEST(InsertScan, ABeamThroughAnExactCornerClearsNeitherCellItOnlyTouches) {
+  // From the centre of (0, 0) at 45 degrees the beam passes exactly through the corners of the
+  // diagonal cells. The cells beside each corner, e.g. (1, 0) and (0, 1), are touched at one point:
+  // one of them may be a wall the beam squeezed past, so neither may get a miss.
+  OccupancyGrid map(kGeometry);
+  insert_scan(map, {0.25, 0.25, 0.25 * kPi}, one_beam(2.5), {}, nullptr);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(map.state({i, i}), CellState::kFree) << i;
+    EXPECT_EQ(map.state({i + 1, i}), CellState::kUnknown) << i;
+    EXPECT_EQ(map.state({i, i + 1}), CellState::kUnknown) << i;
+  }
+}
+
 TEST(InsertScan, ShortAndLongReadingsNearTheWallMoveOnlyTheHitNotTheMisses) {
   // The wall face is at x = 3.5 (cell (7, 3) spans [3.5, 4.0)); the true range is 2.25.
   // Slightly long, 2.27: the return still lies in (7, 3), which gets the hit and no miss.

@@ -1,6 +1,7 @@
 #pragma once
 // Where tests find the real datasets: the one setting TESSERA_DATA_DIR, with ../shared/data (beside
-// the project root) as default. When CI=true a missing dataset fails the test instead of skipping it.
+// the project root) as default. When CI=true a missing dataset fails the test instead of skipping
+// it.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,13 +16,13 @@ namespace tessera::support {
 }  // namespace tessera::support
 
 /// Skips the test when `path` does not exist, or fails it when CI=true.
-#define TESSERA_REQUIRE_DATA(path)                                                       \
-  do {                                                                                   \
-    if (!std::filesystem::exists(path)) {                                                \
-      if (::tessera::support::running_in_ci()) {                                         \
-        FAIL() << "dataset missing (CI=true): " << (path).string();                      \
-      } else {                                                                           \
+#define TESSERA_REQUIRE_DATA(path)                                                           \
+  do {                                                                                       \
+    if (!std::filesystem::exists(path)) {                                                    \
+      if (::tessera::support::running_in_ci()) {                                             \
+        FAIL() << "dataset missing (CI=true): " << (path).string();                          \
+      } else {                                                                               \
         GTEST_SKIP() << "dataset missing: " << (path).string() << " (set TESSERA_DATA_DIR)"; \
-      }                                                                                  \
-    }                                                                                    \
+      }                                                                                      \
+    }                                                                                        \
   } while (false)

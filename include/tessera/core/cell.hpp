@@ -32,9 +32,9 @@ inline constexpr std::array<Cell, 8> kNeighbors8{
 
 struct CellHash {
   [[nodiscard]] std::size_t operator()(Cell c) const noexcept {
-    return std::hash<std::uint64_t>{}((static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.x))
-                                       << 32) |
-                                      static_cast<std::uint32_t>(c.y));
+    return std::hash<std::uint64_t>{}(
+        (static_cast<std::uint64_t>(static_cast<std::uint32_t>(c.x)) << 32) |
+        static_cast<std::uint32_t>(c.y));
   }
 };
 

@@ -21,7 +21,9 @@ struct SensorModelOptions {
 /// Empty when usable; otherwise names the field and the rule it breaks.
 [[nodiscard]] std::optional<std::string> validate(const SensorModelOptions& o);
 
-[[nodiscard]] inline float log_odds(double p) { return static_cast<float>(std::log(p / (1.0 - p))); }
+[[nodiscard]] inline float log_odds(double p) {
+  return static_cast<float>(std::log(p / (1.0 - p)));
+}
 [[nodiscard]] inline double probability(float log_odds) {
   return 1.0 - 1.0 / (1.0 + std::exp(static_cast<double>(log_odds)));
 }
@@ -30,9 +32,9 @@ struct SensorModelOptions {
 enum class CellState : std::uint8_t { kUnknown = 0, kFree = 1, kOccupied = 2 };
 
 /// Occupancy grid map: one float log-odds value per cell plus "unknown" as its own state (a cell no
-/// sensor has reported on is not the same as p = 0.5). Offers the probability view and the threshold
-/// view of the lecture: with threshold 0.5 more cells count as occupied (objects look bigger), with
-/// 0.7 fewer. Memory: 5 bytes per cell.
+/// sensor has reported on is not the same as p = 0.5). Offers the probability view and the
+/// threshold view of the lecture: with threshold 0.5 more cells count as occupied (objects look
+/// bigger), with 0.7 fewer. Memory: 5 bytes per cell.
 class OccupancyGrid {
  public:
   OccupancyGrid() = default;
@@ -50,7 +52,8 @@ class OccupancyGrid {
     const std::size_t i = geometry_.index_of(c);
     return known_[i] ? std::optional<double>{probability(log_odds_[i])} : std::nullopt;
   }
-  /// Threshold view: kOccupied when p >= occupied_threshold, kFree below it, kUnknown if never seen.
+  /// Threshold view: kOccupied when p >= occupied_threshold, kFree below it, kUnknown if never
+  /// seen.
   [[nodiscard]] CellState state(Cell c, double occupied_threshold = 0.5) const {
     const std::size_t i = geometry_.index_of(c);
     if (!known_[i]) return CellState::kUnknown;

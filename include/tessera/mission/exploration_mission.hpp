@@ -76,12 +76,15 @@ struct ExplorationResult {
 /// (cell robot: the 8 neighbours; lidar robot: one scan), and the touched cells update the frontier
 /// and the coverage incrementally. A robot replans (FrontierExplorer) when it reaches its target,
 /// when the target is no longer a frontier cell, or when its next cell is no longer known free. A
-/// refused move is counted, the refused cell is written into the map as an obstacle (as a bumper
-/// would report it) and the robot replans. A target that is still a frontier cell after the robot
-/// stood on it and sensed is blacklisted. A robot that found nothing waits 1, 2, 4, ... (at most
-/// 32) steps before it searches again while other robots are busy; when no robot has a plan, all
-/// search again before the run stops. The run stops when no robot can reach an eligible frontier
-/// cell ("no reachable frontier") or at the step limit ("step limit").
+/// cell a robot has stood in stays free whatever a later reading says (BOBMapping's re-sensing
+/// rule), so a robot can always go back the way it came. A refused move is counted, the refused
+/// cell is written into the map as an obstacle (as a bumper would report it) and the robot replans.
+/// A target that is still a frontier cell after the robot stood on it and sensed is blacklisted,
+/// and so is a cell chosen as a target more than three times (sensor noise can make a cell at a
+/// wall a frontier again and again). A robot that found nothing waits 1, 2, 4, ... (at most 32)
+/// steps before it searches again while other robots are busy; when no robot has a plan, all search
+/// again before the run stops. The run stops when no robot can reach an eligible frontier cell ("no
+/// reachable frontier") or at the step limit ("step limit").
 ///
 /// Cost per step: one sensor update per robot (O(touched) frontier and coverage upkeep) plus a BFS
 /// per replanning robot over the cells nearer than its new target.

@@ -47,10 +47,11 @@ struct ScanInsertOptions {
 /// clear up to max range (cells entered at least free_margin_m before it, since a wall just beyond
 /// the range could read as "no return" with noise). The hit cell is the one containing the point
 /// free_margin_m (plus 1e-9 m) beyond the range, so a return exactly on a cell border lands in the
-/// wall cell behind it. Ranges below min_range_m, and NaN, are invalid and skipped. Cells outside the map are
-/// ignored. Every cell whose value changed or that became known is appended to `touched` when it is
-/// not null (cells may repeat). Traversal is exact (Amanatides & Woo, grid/ray_cast.hpp); log-odds
-/// deltas are computed once per call. Cost: O(beams * max_range / resolution).
+/// wall cell behind it. Ranges below min_range_m, and NaN, are invalid and skipped. Cells outside
+/// the map are ignored. Every cell whose value changed or that became known is appended to
+/// `touched` when it is not null (cells may repeat). Traversal is exact (Amanatides & Woo,
+/// grid/ray_cast.hpp); log-odds deltas are computed once per call. Cost: O(beams * max_range /
+/// resolution).
 void insert_scan(OccupancyGrid& map, const Pose2& T_map_sensor, const RangeScan& scan,
                  const ScanInsertOptions& options, std::vector<Cell>* touched);
 

@@ -5,18 +5,24 @@ JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
 TESSERA := build/dev/apps/tessera/tessera
 
-.PHONY: all deps build demo test test-dev test-ci test-sanitize bench clean
+.PHONY: all deps configure build cli demo test test-dev test-ci test-sanitize bench clean
 
 all: build
 
 deps:
 	@bash scripts/install-deps.sh
 
-build: deps
+configure: deps
 	cmake --preset dev
+
+build: configure
 	cmake --build --preset dev -j $(JOBS)
 
-demo: build
+# Only the program, so that the demo does not wait for the test suite to compile.
+cli: configure
+	cmake --build --preset dev -j $(JOBS) --target tessera
+
+demo: cli
 	$(TESSERA) explore --out $(DEMO_OUT)
 
 ifeq ($(CI),true)

@@ -37,46 +37,46 @@ void expect_input_error(const TempDir& dir, const std::string& world_args,
 }
 
 TEST(CliErrors, MissingWorldFileIsAnInputError) {
-  TempDir dir("missing");
+  TempDir dir;
   const auto world = dir.path() / "nope.yaml";
   expect_input_error(dir, "--world " + world.string(), "nope.yaml", "no such file");
 }
 
 TEST(CliErrors, YamlWithNegativeResolutionIsRejected) {
-  TempDir dir("negres");
-  dir.write("m.pgm", pgm(4, 4, std::string(16, '\xfe')));
-  dir.write("m.yaml", "image: m.pgm\nresolution: -0.05\norigin: [0, 0, 0]\n");
+  TempDir dir;
+  support::write_bytes(dir / "m.pgm", pgm(4, 4, std::string(16, '\xfe')));
+  support::write_bytes(dir / "m.yaml", "image: m.pgm\nresolution: -0.05\norigin: [0, 0, 0]\n");
   expect_input_error(dir, "--world " + (dir.path() / "m.yaml").string(), "m.yaml", "resolution");
 }
 
 TEST(CliErrors, YamlWithoutImageIsRejected) {
-  TempDir dir("noimage");
-  dir.write("m.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n");
+  TempDir dir;
+  support::write_bytes(dir / "m.yaml", "resolution: 0.05\norigin: [0, 0, 0]\n");
   expect_input_error(dir, "--world " + (dir.path() / "m.yaml").string(), "m.yaml", "image");
 }
 
 TEST(CliErrors, TruncatedPgmIsRejected) {
-  TempDir dir("truncated");
-  dir.write("m.pgm", pgm(10, 10, std::string(37, '\xfe')));
-  dir.write("m.yaml", "image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
+  TempDir dir;
+  support::write_bytes(dir / "m.pgm", pgm(10, 10, std::string(37, '\xfe')));
+  support::write_bytes(dir / "m.yaml", "image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
   expect_input_error(dir, "--world " + (dir.path() / "m.yaml").string(), "m.pgm", "100");
 }
 
 TEST(CliErrors, FileThatIsNotAPgmIsRejected) {
-  TempDir dir("notpgm");
-  dir.write("m.pgm", "hello, I am text\n");
-  dir.write("m.yaml", "image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
+  TempDir dir;
+  support::write_bytes(dir / "m.pgm", "hello, I am text\n");
+  support::write_bytes(dir / "m.yaml", "image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
   expect_input_error(dir, "--world " + (dir.path() / "m.yaml").string(), "m.pgm", "PGM");
 }
 
 TEST(CliErrors, MovingAiFileWithWrongSizeHeaderIsRejected) {
-  TempDir dir("movingai");
-  dir.write("m.map", "type octile\nheight 4\nwidth 3\nmap\n...\n...\n...\n");
+  TempDir dir;
+  support::write_bytes(dir / "m.map", "type octile\nheight 4\nwidth 3\nmap\n...\n...\n...\n");
   expect_input_error(dir, "--world " + (dir.path() / "m.map").string(), "m.map", "height");
 }
 
 TEST(CliErrors, StartInsideAnObstacleIsRejected) {
-  TempDir dir("startobstacle");
+  TempDir dir;
   // The built-in office has its outer wall at x < 0.2 m.
   const support::CliRun run =
       run_cli("explore --start 0.05,5 --quiet --out " + (dir.path() / "out").string());
@@ -87,7 +87,7 @@ TEST(CliErrors, StartInsideAnObstacleIsRejected) {
 }
 
 TEST(CliErrors, StartOutsideTheMapIsRejected) {
-  TempDir dir("startoutside");
+  TempDir dir;
   const support::CliRun run =
       run_cli("explore --start 100,5 --quiet --out " + (dir.path() / "out").string());
   EXPECT_EQ(run.exit_code, 3) << run.output;
@@ -96,8 +96,8 @@ TEST(CliErrors, StartOutsideTheMapIsRejected) {
 }
 
 TEST(CliErrors, WorldWithNoFreeCellIsRejected) {
-  TempDir dir("nofree");
-  dir.write("m.map", "type octile\nheight 2\nwidth 3\nmap\n@@@\n@T@\n");
+  TempDir dir;
+  support::write_bytes(dir / "m.map", "type octile\nheight 2\nwidth 3\nmap\n@@@\n@T@\n");
   expect_input_error(dir, "--world " + (dir.path() / "m.map").string(), "m.map", "no free cell");
 }
 

@@ -30,7 +30,7 @@ std::string read_text(const std::filesystem::path& p) {
 }
 
 TEST(CliExplore, BuiltInWorldWritesMapPictureTrajectoryAndReport) {
-  TempDir dir("explore");
+  TempDir dir;
   const auto out = dir.path() / "demo";
   const support::CliRun run = run_cli("explore --out " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
@@ -55,7 +55,7 @@ TEST(CliExplore, BuiltInWorldWritesMapPictureTrajectoryAndReport) {
 }
 
 TEST(CliExplore, SameSeedGivesTheSameMapAndPath) {
-  TempDir dir("determinism");
+  TempDir dir;
   const std::string common = " --sensor lidar --robots 2 --strategy priority --quiet --seed 5";
   ASSERT_EQ(run_cli("explore --out " + (dir.path() / "a").string() + common).exit_code, 0);
   ASSERT_EQ(run_cli("explore --out " + (dir.path() / "b").string() + common).exit_code, 0);
@@ -66,7 +66,7 @@ TEST(CliExplore, SameSeedGivesTheSameMapAndPath) {
 }
 
 TEST(CliExplore, ExploredMapCanBeRenderedDescribedAndConverted) {
-  TempDir dir("tools");
+  TempDir dir;
   const auto out = dir.path() / "run";
   ASSERT_EQ(run_cli("explore --quiet --builtin labyrinth --out " + out.string()).exit_code, 0);
 
@@ -90,7 +90,7 @@ TEST(CliExplore, ExploredMapCanBeRenderedDescribedAndConverted) {
 TEST(CliExplore, RealRosMapIsExploredCompletely) {
   const auto world = support::data_path("maps/ros_map_server/nav2_tb3_sandbox/tb3_sandbox.yaml");
   TESSERA_REQUIRE_DATA(world);
-  TempDir dir("tb3");
+  TempDir dir;
   const auto out = dir.path() / "run";
   const support::CliRun run =
       run_cli("explore --quiet --world " + world.string() + " --out " + out.string());

@@ -1,7 +1,6 @@
 #pragma once
 // Helpers for the io tests: a private temporary folder per test, small file writers, fixtures.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -11,47 +10,14 @@
 #include <string_view>
 #include <vector>
 
+#include "support/temp_dir.hpp"
+#include "tessera/grid/occupancy_grid.hpp"
+
 namespace tessera::io_test {
 
-/// A fresh folder under the system temp dir, removed with everything in it at scope exit.
-class TempDir {
- public:
-  TempDir() {
-    static int counter = 0;
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    const std::string test = info != nullptr ? info->name() : "test";
-    path_ =
-        std::filesystem::temp_directory_path() /
-        ("tessera-io-" + test + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
-  [[nodiscard]] std::filesystem::path operator/(const std::string& name) const {
-    return path_ / name;
-  }
-
- private:
-  std::filesystem::path path_;
-};
-
-inline void write_bytes(const std::filesystem::path& path, std::string_view bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  ASSERT_TRUE(out.good()) << path;
-}
-
-inline std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using support::read_bytes;
+using support::TempDir;
+using support::write_bytes;
 
 /// Names of the entries of `dir`, sorted.
 inline std::vector<std::string> files_in(const std::filesystem::path& dir) {
@@ -61,6 +27,16 @@ inline std::vector<std::string> files_in(const std::filesystem::path& dir) {
   }
   std::sort(names.begin(), names.end());
   return names;
+}
+
+/// Row y of a grid as text: '.' free, `occupied` for occupied cells, '?' unknown.
+inline std::string row_text(const OccupancyGrid& g, char occupied, int y) {
+  std::string s;
+  for (int x = 0; x < g.geometry().width(); ++x) {
+    const CellState st = g.state({x, y});
+    s += st == CellState::kUnknown ? '?' : st == CellState::kOccupied ? occupied : '.';
+  }
+  return s;
 }
 
 /// tests/fixtures/io/<relative> in the source tree (TESSERA_SOURCE_DIR, set by CTest).

@@ -9,18 +9,9 @@
 namespace tessera {
 namespace {
 
+using io_test::row_text;
 using io_test::TempDir;
 using ::testing::HasSubstr;
-
-// Row y of the grid as the file would show it: '.' free, '@' blocked, '?' unknown.
-std::string row_text(const OccupancyGrid& g, int y) {
-  std::string s;
-  for (int x = 0; x < g.geometry().width(); ++x) {
-    const CellState st = g.state({x, y});
-    s += st == CellState::kUnknown ? '?' : st == CellState::kOccupied ? '@' : '.';
-  }
-  return s;
-}
 
 Result<OccupancyGrid> read_text(const TempDir& dir, const std::string& text) {
   io_test::write_bytes(dir / "t.map", text);
@@ -33,9 +24,9 @@ TEST(ReadMovingAiMap, ReadsTheFixtureTopRowFirst) {
   EXPECT_EQ(g->geometry(), GridGeometry({0, 0}, 0.5, 5, 3));
   EXPECT_EQ(g->known_count(), 15u);
   // File rows "@.GST", "..W.O", ".....": G and S passable; @, T, W, O blocked.
-  EXPECT_EQ(row_text(*g, 2), "@...@");
-  EXPECT_EQ(row_text(*g, 1), "..@.@");
-  EXPECT_EQ(row_text(*g, 0), ".....");
+  EXPECT_EQ(row_text(*g, '@', 2), "@...@");
+  EXPECT_EQ(row_text(*g, '@', 1), "..@.@");
+  EXPECT_EQ(row_text(*g, '@', 0), ".....");
   EXPECT_NEAR(*g->probability_at({0, 2}), 1.0, 1e-3);
   EXPECT_NEAR(*g->probability_at({1, 2}), 0.0, 1e-3);
 }
@@ -45,7 +36,7 @@ TEST(ReadMovingAiMap, AcceptsWindowsLineEndsAndTrailingBlankLines) {
   Result<OccupancyGrid> g =
       read_text(dir, "type octile\r\nheight 1\r\nwidth 2\r\nmap\r\n.@\r\n\r\n");
   ASSERT_TRUE(g) << g.error().message;
-  EXPECT_EQ(row_text(*g, 0), ".@");
+  EXPECT_EQ(row_text(*g, '@', 0), ".@");
 }
 
 TEST(ReadMovingAiMap, WrongHeaderNamesTheLine) {
@@ -143,8 +134,8 @@ TEST(ReadMovingAiMap, FirstFileRowIsTheTopOfTheGrid) {
   TESSERA_REQUIRE_DATA(path);
   Result<OccupancyGrid> g = read_movingai_map(path);
   ASSERT_TRUE(g) << g.error().message;
-  EXPECT_EQ(row_text(*g, 31).substr(0, 5), "@@@.@");  // file row 0
-  EXPECT_EQ(row_text(*g, 0).substr(0, 5), "@...@");   // last file row
+  EXPECT_EQ(row_text(*g, '@', 31).substr(0, 5), "@@@.@");  // file row 0
+  EXPECT_EQ(row_text(*g, '@', 0).substr(0, 5), "@...@");   // last file row
 }
 
 }  // namespace

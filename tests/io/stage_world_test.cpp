@@ -12,17 +12,9 @@
 namespace tessera {
 namespace {
 
+using io_test::row_text;
 using io_test::TempDir;
 using ::testing::HasSubstr;
-
-std::string row_text(const OccupancyGrid& g, int y) {
-  std::string s;
-  for (int x = 0; x < g.geometry().width(); ++x) {
-    const CellState st = g.state({x, y});
-    s += st == CellState::kUnknown ? '?' : st == CellState::kOccupied ? '#' : '.';
-  }
-  return s;
-}
 
 std::size_t free_count(const OccupancyGrid& g) {
   std::size_t n = 0;
@@ -56,9 +48,9 @@ TEST(ReadStageWorld, ResamplesAnAnisotropicBitmapWithoutOpeningWalls) {
   // 8 x 2 px over 8 x 3 m: 1 m x 1.5 m pixels, 1 m cells; origin = pose - size / 2.
   EXPECT_EQ(g->geometry(), GridGeometry({-3.0, 0.5}, 1.0, 8, 3));
   EXPECT_EQ(g->known_count(), 24u);
-  EXPECT_EQ(row_text(*g, 2), "..#.....");  // top pixel row only
-  EXPECT_EQ(row_text(*g, 1), "..#....#");  // the middle cell row overlaps both pixel rows
-  EXPECT_EQ(row_text(*g, 0), ".......#");  // bottom pixel row only
+  EXPECT_EQ(row_text(*g, '#', 2), "..#.....");  // top pixel row only
+  EXPECT_EQ(row_text(*g, '#', 1), "..#....#");  // the middle cell row overlaps both pixel rows
+  EXPECT_EQ(row_text(*g, '#', 0), ".......#");  // bottom pixel row only
 }
 
 TEST(ReadStageWorld, QuarterTurnYawRotatesTheGridCounterClockwise) {
@@ -69,9 +61,9 @@ TEST(ReadStageWorld, QuarterTurnYawRotatesTheGridCounterClockwise) {
   ASSERT_TRUE(g) << g.error().message;
   EXPECT_EQ(g->geometry(), GridGeometry({8.5, 16.0}, 1.0, 3, 8));
   // The model's right edge (x = 7, rows 0 and 1 blocked) becomes the top edge.
-  EXPECT_EQ(row_text(*g, 7), ".##");
-  EXPECT_EQ(row_text(*g, 2), "##.");  // the model's column 2 (rows 1 and 2 blocked)
-  EXPECT_EQ(row_text(*g, 0), "...");
+  EXPECT_EQ(row_text(*g, '#', 7), ".##");
+  EXPECT_EQ(row_text(*g, '#', 2), "##.");  // the model's column 2 (rows 1 and 2 blocked)
+  EXPECT_EQ(row_text(*g, '#', 0), "...");
 }
 
 TEST(ReadStageWorld, AcceptsMacrosStageThreePosesAndBitmapsCopiedBesideTheWorld) {

@@ -26,7 +26,7 @@ demo: cli
 	$(TESSERA) explore --out $(DEMO_OUT)
 
 ifeq ($(CI),true)
-test: test-ci test-sanitize
+test: test-ci test-sanitize bob-firmware
 else
 test: test-dev
 endif
@@ -50,3 +50,9 @@ bench: build
 
 clean:
 	rm -rf build out
+
+# The freestanding bob core and its example Cortex-M4 firmware; prints flash and RAM use.
+.PHONY: bob-firmware
+bob-firmware: deps
+	cmake --preset cortex-m
+	cmake --build --preset cortex-m -j $(JOBS)

@@ -1,0 +1,143 @@
+#pragma once
+// The BOBMapping explorer (section 3.1, section 3.4, Code 1 and Code 2) as a step machine with no
+// I/O: the caller (simulator or firmware) reports sensor readings of cells and asks for the next
+// one-cell move. Freestanding: no heap, no exceptions, no RTTI, no standard library beyond
+// <cstdint>/<cstddef>; every buffer comes from the caller.
+
+#include <cstddef>
+#include <cstdint>
+
+#include "tessera/bob/direction.hpp"
+#include "tessera/bob/explorer_options.hpp"
+#include "tessera/bob/final_map.hpp"
+#include "tessera/bob/packed_map.hpp"
+#include "tessera/bob/status.hpp"
+
+namespace tessera::bob {
+
+/// Why the explorer stopped (section 3.4).
+enum class StopReason : std::uint8_t {
+  kNone,               // still exploring
+  kBackAtStart,        // (i) back at the initial cell with no explorable neighbour (kTrail)
+  kAllSensed,          // (ii) every cell of the grid is sensed
+  kNoReachableTarget,  // kShortestKnownPath: no explorable cell reachable through known space
+};
+
+/// Tremaux exploration with the optimisation of BOBMapping Code 2.
+///
+/// A cell is *explorable* when it is known free (sensed empty or visited), has never been stood
+/// in, and has an unsensed orthogonal neighbour inside the grid. Each next_move():
+///  1. stops if every cell is sensed (condition ii);
+///  2. Code 2: moves to the first explorable neighbour in clockwise order from North;
+///  3. otherwise backtracks: kTrail moves one cell opposite to the stored "reached by" direction,
+///     or stops at the start cell (condition i); kShortestKnownPath takes the first step of a
+///     shortest path through known-free cells to the nearest explorable cell (ties broken by the
+///     same N, E, S, W order), or stops when there is none.
+/// The move is committed at once: position(), heading() and the map assume the robot has done
+/// it. The caller then reports what its sensors saw on the way with sense(), and asks again.
+///
+/// Visited cells are never forward candidates although Code 2 would allow one with unsensed
+/// neighbours: arriving in a cell senses all its neighbours (section 3.2: the three around the
+/// next cell; the fourth is where the robot came from), so only the start cell, whose back
+/// neighbour the sensors cannot see at rest, can be such a cell, and re-entering it would
+/// overwrite its stored direction and close a loop in the trail. Returning to the start senses
+/// that neighbour anyway. This also bounds a run: every forward move enters a new cell. kTrail
+/// returns there by construction; kShortestKnownPath therefore also takes the start cell as a
+/// target while it has an unsensed neighbour and the robot has not been back in it since starting
+/// (once only, so a sensor that never reports that neighbour cannot trap the robot).
+///
+/// Re-sensing (section 3.4): a later reading overrides an earlier one, except that a reading of
+/// "occupied" in a visited cell is discarded (the robot passed through it without collision).
+///
+/// Protocol: init(); sense() what the sensors see at the start pose; start(); then loop
+/// { next_move(); move the robot; sense() on the way } until next_move() returns kFinished.
+///
+/// Cost: next_move() is O(1) with kTrail and O(cells) with kShortestKnownPath; sense() is O(1).
+/// Memory: the packed map (PackedMap::bytes_needed) plus, for kShortestKnownPath, scratch_bytes().
+class Explorer {
+ public:
+  /// Scratch kShortestKnownPath needs: a queue of 2 bytes per cell and 1 seen bit per cell.
+  /// 11 x 14 -> 328 bytes. kTrail needs none.
+  [[nodiscard]] static constexpr std::size_t scratch_bytes(int width_cells, int height_cells) {
+    const std::size_t n =
+        static_cast<std::size_t>(width_cells) * static_cast<std::size_t>(height_cells);
+    return 2u * n + (n + 7u) / 8u;
+  }
+
+  constexpr Explorer() = default;
+
+  /// Sets up a width x height grid of unsensed cells in `map_buffer`
+  /// (PackedMap::bytes_needed bytes). `scratch` may be null with kTrail. kBadSize,
+  /// kBufferTooSmall on bad arguments; the explorer is then unusable.
+  [[nodiscard]] Status init(const ExplorerOptions& options, std::uint8_t* map_buffer,
+                            std::size_t map_buffer_bytes, int width_cells, int height_cells,
+                            std::uint8_t* scratch = nullptr, std::size_t scratch_buffer_bytes = 0);
+
+  /// Records a reading: `occupied` for any detection inside cell c. kOutOfBounds for a cell
+  /// outside the grid (ignore it: the robot's sensors see past the grid's edge), kNotStarted
+  /// before init(). A reading of "occupied" in a visited cell is discarded (kOk).
+  Status sense(GridCell c, bool occupied);
+
+  /// Places the robot in `cell` facing `heading` and marks the cell visited. Section 3.4 requires
+  /// the front neighbour to be unoccupied: kFrontBlocked if it is outside the grid or was sensed
+  /// occupied (the explorer then stays unstarted); an unsensed front cell is taken as free, as
+  /// that requirement says. kOutOfBounds, kNotStarted (before init), kAlreadyStarted.
+  [[nodiscard]] Status start(GridCell cell, Direction heading);
+
+  /// The next one-cell move into `move` (kOk), or kFinished (see stop_reason()), or kNotStarted.
+  [[nodiscard]] Status next_move(Direction& move);
+
+  [[nodiscard]] bool started() const { return started_; }
+  [[nodiscard]] bool finished() const { return stop_reason_ != StopReason::kNone; }
+  [[nodiscard]] StopReason stop_reason() const { return stop_reason_; }
+  [[nodiscard]] GridCell position() const { return position_; }
+  [[nodiscard]] GridCell start_cell() const { return start_; }
+  [[nodiscard]] Direction heading() const { return heading_; }
+  [[nodiscard]] const ExplorerOptions& options() const { return options_; }
+  [[nodiscard]] const PackedMap& map() const { return map_; }
+
+  /// One-cell moves so far (Table 1 "length path").
+  [[nodiscard]] std::uint32_t moves() const { return moves_; }
+  /// Heading changes so far, each one turn in place whatever its angle (Table 1 "turns").
+  [[nodiscard]] std::uint32_t turns() const { return turns_; }
+  /// The same in 90-degree units: a reversal counts two.
+  [[nodiscard]] std::uint32_t quarter_turns() const { return quarter_turns_; }
+  /// Readings that changed an already sensed cell (Table 1 "re-sensed cells", counted per change).
+  [[nodiscard]] std::uint32_t resensed() const { return resensed_; }
+  /// "Occupied" readings discarded because the cell was visited.
+  [[nodiscard]] std::uint32_t discarded_readings() const { return discarded_; }
+  /// Cells of the grid not sensed yet.
+  [[nodiscard]] int unsensed_cells() const { return unsensed_; }
+
+  /// Writes the final 1-bit map (FinalMap layout) into `buffer`
+  /// (FinalMap::bytes_needed bytes). kBufferTooSmall, kNotStarted before init().
+  [[nodiscard]] Status write_final_map(std::uint8_t* buffer, std::size_t buffer_bytes) const;
+
+ private:
+  /// Code 2: first explorable neighbour clockwise from North; false when there is none.
+  [[nodiscard]] bool check_neighbors(Direction& dir) const;
+  [[nodiscard]] bool explorable(GridCell c) const;
+  /// First step of a shortest known-free path to the nearest explorable cell.
+  [[nodiscard]] bool first_step_to_nearest_explorable(Direction& dir);
+  void commit_move(Direction dir);
+  void mark_sensed(GridCell c, CellState s);
+
+  ExplorerOptions options_{};
+  PackedMap map_{};
+  std::uint8_t* scratch_ = nullptr;
+  GridCell start_{};
+  GridCell position_{};
+  Direction heading_ = Direction::kNorth;
+  StopReason stop_reason_ = StopReason::kNone;
+  bool initialised_ = false;
+  bool started_ = false;
+  bool start_reentered_ = false;
+  int unsensed_ = 0;
+  std::uint32_t moves_ = 0;
+  std::uint32_t turns_ = 0;
+  std::uint32_t quarter_turns_ = 0;
+  std::uint32_t resensed_ = 0;
+  std::uint32_t discarded_ = 0;
+};
+
+}  // namespace tessera::bob

@@ -1,0 +1,24 @@
+#pragma once
+// Options of the BOBMapping explorer (explorer.hpp). Freestanding: <cstdint> only.
+
+#include <cstdint>
+
+namespace tessera::bob {
+
+/// How the robot returns to unexplored space when no neighbour qualifies (BOBMapping Code 1,
+/// line 13).
+enum class Backtrack : std::uint8_t {
+  /// The paper's Tremaux backtracking: one cell back along the stored "reached by" directions per
+  /// step; stops back at the start cell with no explorable neighbour (section 3.4, condition i).
+  kTrail,
+  /// Uses the map already built: the shortest known-free path (breadth-first search in a caller
+  /// buffer) to the nearest explorable cell; stops when none is reachable. Needs
+  /// Explorer::scratch_bytes() of scratch.
+  kShortestKnownPath,
+};
+
+struct ExplorerOptions {
+  Backtrack backtrack = Backtrack::kTrail;
+};
+
+}  // namespace tessera::bob

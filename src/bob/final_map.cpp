@@ -8,13 +8,10 @@ Status FinalMap::init(std::uint8_t* buffer, std::size_t buffer_bytes, int width_
                       int height_cells) {
   buffer_ = nullptr;
   width_ = height_ = 0;
-  if (width_cells < 1 || height_cells < 1 || width_cells > internal::kMaxCells ||
-      height_cells > internal::kMaxCells / width_cells) {
-    return Status::kBadSize;
-  }
+  if (!internal::valid_grid_size(width_cells, height_cells)) return Status::kBadSize;
   const std::size_t bytes = bytes_needed(width_cells, height_cells);
   if (buffer == nullptr || buffer_bytes < bytes) return Status::kBufferTooSmall;
-  for (std::size_t i = 0; i < bytes; ++i) buffer[i] = 0;
+  internal::zero_bytes(buffer, bytes);
   buffer_ = buffer;
   width_ = width_cells;
   height_ = height_cells;

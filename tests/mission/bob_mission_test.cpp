@@ -1,0 +1,194 @@
+// Whole simulated BOBMapping runs (mission/bob_mission.hpp) on small hand-made worlds.
+#include "tessera/mission/bob_mission.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "tessera/bob/final_map.hpp"
+
+namespace tessera {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr double kCellM = 0.22;
+
+/// Rows top first; '#' solid, anything else free. 'R' marks a start cell (returned via `start`).
+World text_world(const std::vector<std::string>& rows, Cell* start = nullptr,
+                 double cell_m = kCellM) {
+  const int h = static_cast<int>(rows.size());
+  const int w = static_cast<int>(rows.front().size());
+  const GridGeometry g({0.0, 0.0}, cell_m, w, h);
+  std::vector<std::uint8_t> solid(g.size(), 0);
+  for (int r = 0; r < h; ++r) {
+    for (int x = 0; x < w; ++x) {
+      const char ch = rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(x)];
+      const Cell c{x, h - 1 - r};
+      solid[g.index_of(c)] = ch == '#' ? 1 : 0;
+      if (ch == 'R' && start != nullptr) *start = c;
+    }
+  }
+  return World(g, std::move(solid), "text");
+}
+
+std::vector<std::vector<std::string>> worlds() {
+  return {
+      {"#########", "#.......#", "#.......#", "#..##...#", "#..##...#", "#R......#", "#########"},
+      {"###########", "#....#....#", "#....#....#", "#.........#", "#....#....#", "#R...#....#",
+       "###########"},
+      {"###########", "#.#...#...#", "#.#.#.#.#.#", "#...#...#.#", "###.#####.#", "#..R......#",
+       "###########"},
+      // Open at the grid's edge, like the paper's open configurations.
+      {"...........", "...........", "..###......", "..#........", "..#....##..", "..#....##..",
+       "...........", "...........", "......#....", ".....###...", "...........", "..##.......",
+       "...........", "R.........."},
+  };
+}
+
+void expect_exact(const World& world, const BobResult& r) {
+  EXPECT_EQ(r.row.empty_as_occupied, 0);
+  EXPECT_EQ(r.row.occupied_as_empty, 0);
+  EXPECT_DOUBLE_EQ(r.row.success_rate, 1.0);
+  const std::size_t row_bytes = bob::FinalMap::bytes_per_row(r.width);
+  ASSERT_EQ(r.final_map.size(), bob::FinalMap::bytes_needed(r.width, r.height));
+  for (int y = 0; y < r.height; ++y) {
+    for (int x = 0; x < r.width; ++x) {
+      const std::uint8_t byte =
+          r.final_map[static_cast<std::size_t>(y) * row_bytes + static_cast<std::size_t>(x / 8)];
+      const bool occupied = ((byte >> (x % 8)) & 1u) != 0;
+      EXPECT_EQ(occupied, world.solid({x, y})) << x << "," << y;
+    }
+  }
+  // Every move is one cell, into a free cell.
+  for (std::size_t i = 1; i < r.route.size(); ++i) {
+    const Cell d = r.route[i] - r.route[i - 1];
+    EXPECT_EQ(std::abs(d.x) + std::abs(d.y), 1);
+    EXPECT_TRUE(world.free(r.route[i]));
+  }
+  EXPECT_EQ(static_cast<int>(r.route.size()) - 1, r.row.path_cells);
+}
+
+TEST(BobMission, NoiseOffGivesAnExactMapForBothVariants) {
+  for (const auto& rows : worlds()) {
+    Cell start;
+    const World world = text_world(rows, &start);
+    for (const BobVariant v : {BobVariant::kTrail, BobVariant::kMapAware}) {
+      BobMissionOptions o;
+      o.variant = v;
+      o.noise = false;
+      o.start = start;
+      const Result<BobResult> r = run_bob(world, o);
+      ASSERT_TRUE(r.ok()) << r.error().message;
+      SCOPED_TRACE(bob_variant_name(v));
+      expect_exact(world, *r);
+      EXPECT_EQ(r->route.front(), start);
+    }
+  }
+}
+
+TEST(BobMission, NoiseOnNeverReadsAnObstacleAsEmpty) {
+  for (const auto& rows : worlds()) {
+    Cell start;
+    const World world = text_world(rows, &start);
+    for (const BobVariant v : {BobVariant::kTrail, BobVariant::kMapAware}) {
+      BobMissionOptions o;
+      o.variant = v;
+      o.start = start;
+      o.seed = 7;
+      const Result<BobResult> r = run_bob(world, o);
+      ASSERT_TRUE(r.ok()) << r.error().message;
+      EXPECT_EQ(r->row.occupied_as_empty, 0);
+      EXPECT_GE(r->row.success_rate, 0.99);
+    }
+  }
+}
+
+TEST(BobMission, MapAwareIsNeverLongerThanTrail) {
+  for (const auto& rows : worlds()) {
+    Cell start;
+    const World world = text_world(rows, &start);
+    BobMissionOptions o;
+    o.noise = false;
+    o.start = start;
+    const Result<BobResult> trail = run_bob(world, o);
+    o.variant = BobVariant::kMapAware;
+    const Result<BobResult> aware = run_bob(world, o);
+    ASSERT_TRUE(trail.ok() && aware.ok());
+    EXPECT_LE(aware->row.path_cells, trail->row.path_cells);
+  }
+}
+
+TEST(BobMission, IsDeterministicForASeed) {
+  Cell start;
+  const World world = text_world(worlds()[1], &start);
+  BobMissionOptions o;
+  o.seed = 42;
+  const Result<BobResult> a = run_bob(world, o);
+  const Result<BobResult> b = run_bob(world, o);
+  ASSERT_TRUE(a.ok() && b.ok());
+  EXPECT_EQ(a->route, b->route);
+  EXPECT_EQ(a->final_map, b->final_map);
+  EXPECT_EQ(a->row.resensed, b->row.resensed);
+  EXPECT_EQ(a->row.turns, b->row.turns);
+}
+
+TEST(BobMission, DefaultStartHasAFreeCellInFront) {
+  const World world = text_world(worlds()[0]);
+  const Result<BobResult> r = run_bob(world, {});
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_TRUE(world.free(r->start));
+  EXPECT_TRUE(world.free(r->start + kNeighbors4[0]));
+}
+
+TEST(BobMission, CountsCellsAndBoundaryEdgesOfAClosedRoom) {
+  // 3 x 3 free room: C = 9, E = 12, bound C + E/2 - 3 = 12.
+  const World world = text_world({"#####", "#...#", "#...#", "#R..#", "#####"});
+  BobMissionOptions o;
+  o.noise = false;
+  o.start = Cell{1, 1};
+  const Result<BobResult> r = run_bob(world, o);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->row.cells, 25);
+  EXPECT_EQ(r->row.free_reachable, 9);
+  EXPECT_EQ(r->row.boundary_edges, 12);
+  EXPECT_DOUBLE_EQ(r->row.path_per_smartdfs, r->row.path_cells / 12.0);
+  EXPECT_DOUBLE_EQ(r->row.path_share, r->row.path_cells / 25.0);
+}
+
+TEST(BobMission, RefusesAWorldLargerThanTheBuffers) {
+  const GridGeometry g({0.0, 0.0}, kCellM, 65, 64);
+  const World world(g, std::vector<std::uint8_t>(g.size(), 0), "big");
+  const Result<BobResult> r = run_bob(world, {});
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::kInput);
+  EXPECT_EQ(r.error().message,
+            "world is 65 x 64 = 4160 cells, more than the robot's buffers hold (4096)");
+}
+
+TEST(BobMission, RefusesAStartFacingAWall) {
+  const World world = text_world({"#####", "#.#.#", "#...#", "#####"});
+  BobMissionOptions o;
+  o.start = Cell{2, 1};
+  const Result<BobResult> r = run_bob(world, o);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::kInput);
+  EXPECT_EQ(r.error().message, "start (2, 1): the cell in front must be free (BOBMapping 3.4)");
+  o.start = Cell{0, 0};
+  const Result<BobResult> solid = run_bob(world, o);
+  ASSERT_FALSE(solid.ok());
+  EXPECT_THAT(solid.error().message, HasSubstr("inside an obstacle"));
+}
+
+TEST(BobMission, RefusesACellSmallerThanTheRobot) {
+  const World world = text_world(worlds()[0], nullptr, 0.1);
+  const Result<BobResult> r = run_bob(world, {});
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::kInput);
+  EXPECT_EQ(r.error().message, "cell 0.1 m does not fit the robot (0.16 x 0.15 m)");
+}
+
+}  // namespace
+}  // namespace tessera

@@ -82,4 +82,21 @@ class ConvertCommand : public Command {
   std::optional<double> map_resolution_m_;
 };
 
+/// tessera bob: the BOBMapping robot (one-cell moves, five IR sensors) maps a world.
+class BobCommand : public Command {
+ public:
+  explicit BobCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  WorldSource world_{std::nullopt, "labyrinth", std::nullopt};
+  double cell_m_ = 0.22;
+  std::string variant_ = "trail";
+  std::string noise_ = "on";
+  std::uint64_t seed_ = 1;
+  std::optional<std::string> start_;
+  std::filesystem::path out_ = "out/bob";
+  bool quiet_ = false;
+};
+
 }  // namespace tessera::cli

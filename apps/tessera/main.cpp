@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   RenderCommand render(app);
   InfoCommand info(app);
   ConvertCommand convert(app);
+  BobCommand bob(app);
 
   try {
     app.parse(argc, argv);
@@ -26,5 +27,6 @@ int main(int argc, char** argv) {
   if (render.parsed()) return render.run();
   if (info.parsed()) return info.run();
   if (convert.parsed()) return convert.run();
+  if (bob.parsed()) return bob.run();
   return kExitUsage;
 }

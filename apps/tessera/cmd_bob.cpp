@@ -1,0 +1,161 @@
+#include <fmt/format.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "commands.hpp"
+#include "tessera/io/atomic_file.hpp"
+#include "tessera/io/bob_map_file.hpp"
+#include "tessera/io/bob_monitor.hpp"
+#include "tessera/io/image_file.hpp"
+#include "tessera/io/json_file.hpp"
+#include "tessera/mission/bob_mission.hpp"
+
+namespace tessera::cli {
+namespace {
+
+const char* stop_reason_name(bob::StopReason r) {
+  switch (r) {
+    case bob::StopReason::kBackAtStart:
+      return "back at start";
+    case bob::StopReason::kAllSensed:
+      return "all cells sensed";
+    case bob::StopReason::kNoReachableTarget:
+      return "no reachable target";
+    case bob::StopReason::kNone:
+      break;
+  }
+  return "none";
+}
+
+nlohmann::json row_json(const BobTableRow& r) {
+  return {{"cells", r.cells},
+          {"sensed_cells", r.sensed_cells},
+          {"resensed_cells", r.resensed},
+          {"empty_as_occupied", r.empty_as_occupied},
+          {"occupied_as_empty", r.occupied_as_empty},
+          {"success_rate", r.success_rate},
+          {"path_cells", r.path_cells},
+          {"turns", r.turns},
+          {"visited_cells", r.visited_cells},
+          {"path_share", r.path_share},
+          {"visited_share", r.visited_share},
+          {"free_reachable_c", r.free_reachable},
+          {"boundary_edges_e", r.boundary_edges},
+          {"path_per_c", r.path_per_c},
+          {"path_per_smartdfs_bound", r.path_per_smartdfs}};
+}
+
+}  // namespace
+
+BobCommand::BobCommand(CLI::App& app) {
+  sub_ = app.add_subcommand(
+      "bob",
+      "Simulate the BOBMapping robot (one cell per move, five IR sensors, perfect localisation) "
+      "on a world; writes monitor.png, map.bob and report.json to --out.");
+  sub_->add_option("--world", world_.file,
+                   "Ground-truth map: ROS map_server .yaml, Stage .world, Moving AI .map, "
+                   "HouseExpo .json, or a .png/.pgm floor plan (needs --map-resolution-m). "
+                   "Default: the built-in world --builtin");
+  sub_->add_option("--builtin", world_.builtin, "Built-in world when --world is not given")
+      ->capture_default_str();
+  sub_->add_option("--map-resolution-m", world_.map_resolution_m,
+                   "Cell size of a --world file that carries none (image, Moving AI: 1.0)");
+  sub_->add_option("--cell", cell_m_, "Robot grid cell side in metres (the world is resampled)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  sub_->add_option("--variant", variant_,
+                   "trail (the paper's backtracking) or map-aware (shortest known path)")
+      ->check(CLI::IsMember({"trail", "map-aware"}))
+      ->capture_default_str();
+  sub_->add_option("--noise", noise_, "IR sensor noise on or off")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  sub_->add_option("--seed", seed_, "Seed for every random draw")->capture_default_str();
+  sub_->add_option("--start", start_,
+                   "Start cell X,Y (column, row of the robot's grid; the robot faces North, "
+                   "whose cell must be free). Default: in the largest free area, the first cell "
+                   "with a free cell North of it");
+  sub_->add_option("--out", out_, "Output folder")->capture_default_str();
+  sub_->add_flag("--quiet", quiet_, "No summary");
+}
+
+int BobCommand::run() const {
+  Result<World> loaded = load_world(world_, cell_m_);
+  if (!loaded) return report_error(loaded.error());
+  World world = std::move(loaded).value();
+  const std::string world_name = world_.file ? world_.file->string() : "builtin:" + world_.builtin;
+  if (std::abs(world.geometry().resolution_m() - cell_m_) > 1e-9) {
+    world = world.resampled(cell_m_);
+  }
+
+  BobMissionOptions options;
+  options.variant = variant_ == "map-aware" ? BobVariant::kMapAware : BobVariant::kTrail;
+  options.noise = noise_ == "on";
+  options.seed = seed_;
+  if (start_) {
+    int x = 0, y = 0;
+    char comma = 0, extra = 0;
+    if (std::sscanf(start_->c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
+      return report_error(usage_error("--start: expected X,Y in cells, got \"" + *start_ + "\""));
+    }
+    options.start = Cell{x, y};
+  }
+
+  Result<BobResult> result = run_bob(world, options);
+  if (!result) {
+    Error e = result.error();
+    if (e.kind == ErrorKind::kInput) e.message = world_name + ": " + e.message;
+    return report_error(e);
+  }
+  const BobResult& r = *result;
+
+  BobMapFile map_file;
+  map_file.width = r.width;
+  map_file.height = r.height;
+  map_file.cell_mm = static_cast<int>(std::lround(world.geometry().resolution_m() * 1000.0));
+  map_file.rows = r.final_map;
+  Result<std::string> map_bytes = encode_bob_map(map_file);
+  if (!map_bytes) return report_error(runtime_error(map_bytes.error().message));
+  Result<std::string> png = encode_png(render_bob_monitor(r));
+  if (!png) return report_error(png.error());
+
+  nlohmann::json report = {{"command", "bob"},
+                           {"seed", seed_},
+                           {"options",
+                            {{"cell_m", cell_m_},
+                             {"variant", variant_},
+                             {"noise", noise_},
+                             {"start", {r.start.x, r.start.y}},
+                             {"localisation", "perfect"},
+                             {"motion", "exact"}}},
+                           {"world",
+                            {{"file", world_name},
+                             {"width_cells", r.width},
+                             {"height_cells", r.height},
+                             {"cell_m", world.geometry().resolution_m()}}},
+                           {"bob", row_json(r.row)}};
+  report["bob"]["stop_reason"] = stop_reason_name(r.stop_reason);
+  report["bob"]["variant"] = variant_;
+  const std::string json = encode_json(report);
+
+  if (Status s = ensure_directory(out_); !s) return report_error(s.error());
+  const std::array<PendingFile, 3> files{
+      {{out_ / "monitor.png", *png}, {out_ / "map.bob", *map_bytes}, {out_ / "report.json", json}}};
+  if (Status s = write_files_atomic(files); !s) return report_error(s.error());
+
+  if (!quiet_) {
+    const BobTableRow& t = r.row;
+    fmt::print(
+        "bob: {} x {} cells, {} ({}), path {} cells, {} turns, re-sensed {}, "
+        "empty-as-occupied {}, occupied-as-empty {}, success {:.2f}%\n",
+        r.width, r.height, variant_, stop_reason_name(r.stop_reason), t.path_cells, t.turns,
+        t.resensed, t.empty_as_occupied, t.occupied_as_empty, 100.0 * t.success_rate);
+    fmt::print("outputs: {}/monitor.png map.bob report.json\n", out_.string());
+  }
+  return kExitOk;
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,122 @@
+// tessera bob end to end: outputs and report fields on a small world, and bad input (exit 3, one
+// line, nothing written).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_run.hpp"
+
+namespace tessera {
+namespace {
+
+using support::run_cli;
+using support::TempDir;
+using ::testing::HasSubstr;
+
+/// A map_server map at 0.22 m per cell; rows top first, '#' solid.
+std::filesystem::path write_world(const TempDir& dir, const std::vector<std::string>& rows,
+                                  const std::string& resolution = "0.22") {
+  std::string pixels;
+  for (const std::string& r : rows) {
+    for (const char ch : r) pixels.push_back(ch == '#' ? '\0' : '\xfe');
+  }
+  support::write_bytes(dir / "w.pgm", "P5\n" + std::to_string(rows.front().size()) + " " +
+                                          std::to_string(rows.size()) + "\n255\n" + pixels);
+  support::write_bytes(dir / "w.yaml", "image: w.pgm\nresolution: " + resolution +
+                                           "\norigin: [0, 0, 0]\nnegate: 0\n"
+                                           "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  return dir.path() / "w.yaml";
+}
+
+const std::vector<std::string> kRoom = {"############", "#..........#", "#..........#",
+                                        "#...##.....#", "#...##.....#", "#..........#",
+                                        "#.....#....#", "#..........#", "############"};
+
+std::string read_bytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(CliBob, WritesMonitorMapAndReportForBothVariants) {
+  TempDir dir;
+  const auto world = write_world(dir, kRoom);
+  for (const std::string variant : {"trail", "map-aware"}) {
+    const auto out = dir.path() / ("out-" + variant);
+    const support::CliRun run = run_cli("bob --world " + world.string() + " --variant " + variant +
+                                        " --noise off --seed 3 --quiet --out " + out.string());
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+    for (const char* f : {"monitor.png", "map.bob", "report.json"}) {
+      EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+    }
+    const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
+    EXPECT_EQ(report["command"], "bob");
+    EXPECT_EQ(report["seed"], 3);
+    EXPECT_EQ(report["options"]["variant"], variant);
+    EXPECT_EQ(report["world"]["width_cells"], 12);
+    EXPECT_EQ(report["bob"]["cells"], 108);
+    EXPECT_EQ(report["bob"]["empty_as_occupied"], 0);
+    EXPECT_EQ(report["bob"]["occupied_as_empty"], 0);
+    EXPECT_EQ(report["bob"]["success_rate"], 1.0);
+    EXPECT_EQ(report["bob"]["free_reachable_c"], 65);
+    EXPECT_GT(report["bob"]["path_cells"].get<int>(), 0);
+    // map.bob: "BOB1", 12, 9, 220 mm, then 9 rows of 2 bytes; the bottom row is all wall.
+    const std::string bob = read_bytes(out / "map.bob");
+    ASSERT_EQ(bob.size(), 10u + 9u * 2u);
+    EXPECT_EQ(bob.substr(0, 4), "BOB1");
+    EXPECT_EQ(bob[4], 12);
+    EXPECT_EQ(bob[6], 9);
+    EXPECT_EQ(static_cast<unsigned char>(bob[8]), 220);
+    EXPECT_EQ(static_cast<unsigned char>(bob[10]), 0xff);
+    EXPECT_EQ(static_cast<unsigned char>(bob[11]), 0x0f);
+  }
+}
+
+int count_lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
+
+void expect_input_error(const TempDir& dir, const std::string& args, const std::string& problem) {
+  const auto out = dir.path() / "out";
+  const support::CliRun run = run_cli("bob " + args + " --quiet --out " + out.string());
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_EQ(count_lines(run.output), 1) << run.output;
+  EXPECT_THAT(run.output, HasSubstr(problem));
+  EXPECT_FALSE(std::filesystem::exists(out)) << "output folder left behind";
+}
+
+TEST(CliBob, UnreadableWorldIsAnInputError) {
+  TempDir dir;
+  expect_input_error(dir, "--world " + (dir.path() / "nope.yaml").string(), "nope.yaml");
+}
+
+TEST(CliBob, CellSmallerThanTheRobotIsAnInputError) {
+  TempDir dir;
+  const auto world = write_world(dir, kRoom);
+  expect_input_error(dir, "--world " + world.string() + " --cell 0.1",
+                     "w.yaml: cell 0.1 m does not fit the robot (0.16 x 0.15 m)");
+}
+
+TEST(CliBob, StartFacingAWallIsAnInputError) {
+  TempDir dir;
+  const auto world = write_world(dir, kRoom);
+  expect_input_error(dir, "--world " + world.string() + " --start 6,1",
+                     "w.yaml: start (6, 1): the cell in front must be free (BOBMapping 3.4)");
+}
+
+TEST(CliBob, GridLargerThanTheBuffersIsAnInputError) {
+  TempDir dir;
+  std::vector<std::string> rows(70, std::string(70, '.'));
+  const auto world = write_world(dir, rows);
+  expect_input_error(dir, "--world " + world.string(),
+                     "w.yaml: world is 70 x 70 = 4900 cells, more than the robot's buffers hold "
+                     "(4096)");
+}
+
+}  // namespace
+}  // namespace tessera

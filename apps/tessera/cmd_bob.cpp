@@ -2,7 +2,6 @@
 
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "commands.hpp"
@@ -75,8 +74,8 @@ BobCommand::BobCommand(CLI::App& app) {
       ->capture_default_str();
   sub_->add_option("--seed", seed_, "Seed for every random draw")->capture_default_str();
   sub_->add_option("--start", start_,
-                   "Start cell X,Y (column, row of the robot's grid; the robot faces North, "
-                   "whose cell must be free). Default: in the largest free area, the first cell "
+                   "Start X,Y in metres: the robot starts in the cell holding it, facing North, "
+                   "whose cell must be free. Default: in the largest free area, the first cell "
                    "with a free cell North of it");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
   sub_->add_flag("--quiet", quiet_, "No summary");
@@ -96,12 +95,9 @@ int BobCommand::run() const {
   options.noise = noise_ == "on";
   options.seed = seed_;
   if (start_) {
-    int x = 0, y = 0;
-    char comma = 0, extra = 0;
-    if (std::sscanf(start_->c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
-      return report_error(usage_error("--start: expected X,Y in cells, got \"" + *start_ + "\""));
-    }
-    options.start = Cell{x, y};
+    Result<Vec2> p = parse_point(*start_, "--start");
+    if (!p) return report_error(p.error());
+    options.start = world.geometry().cell_at_unchecked(*p);
   }
 
   Result<BobResult> result = run_bob(world, options);

@@ -105,7 +105,8 @@ TEST(CliBob, CellSmallerThanTheRobotIsAnInputError) {
 TEST(CliBob, StartFacingAWallIsAnInputError) {
   TempDir dir;
   const auto world = write_world(dir, kRoom);
-  expect_input_error(dir, "--world " + world.string() + " --start 6,1",
+  // 1.43,0.33 m is the centre of cell (6, 1) at 0.22 m.
+  expect_input_error(dir, "--world " + world.string() + " --start 1.43,0.33",
                      "w.yaml: start (6, 1): the cell in front must be free (BOBMapping 3.4)");
 }
 

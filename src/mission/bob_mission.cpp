@@ -26,10 +26,6 @@ struct RobotBuffers {
   std::array<std::uint8_t, kFinalBytes> final_map{};
 };
 
-std::string cell_text(Cell c) {
-  return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
-}
-
 std::string metres_text(double m) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", m);
@@ -41,28 +37,9 @@ bob::GridCell to_grid(Cell c) { return {c.x, c.y}; }
 /// See BobMissionOptions::start.
 std::optional<Cell> default_start(const World& world) {
   const GridGeometry& g = world.geometry();
-  std::vector<std::int32_t> label(g.size(), -1);
-  std::vector<std::size_t> sizes;
-  std::vector<Cell> stack;
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    const Cell seed = g.cell_of(i);
-    if (label[i] >= 0 || world.solid(seed)) continue;
-    const auto l = static_cast<std::int32_t>(sizes.size());
-    sizes.push_back(0);
-    label[i] = l;
-    stack.assign(1, seed);
-    while (!stack.empty()) {
-      const Cell c = stack.back();
-      stack.pop_back();
-      ++sizes.back();
-      for (const Cell d : kNeighbors4) {
-        const Cell n = c + d;
-        if (world.solid(n) || label[g.index_of(n)] >= 0) continue;
-        label[g.index_of(n)] = l;
-        stack.push_back(n);
-      }
-    }
-  }
+  const World::FreeComponents components = world.free_components();
+  const std::vector<std::int32_t>& label = components.label;
+  const std::vector<std::size_t>& sizes = components.sizes;
   // Components from largest to smallest (ties: the first found); the first with a usable cell.
   std::vector<std::int32_t> order(sizes.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<std::int32_t>(i);
@@ -137,9 +114,9 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
   Cell start{};
   if (options.start) {
     start = *options.start;
-    if (!g.contains(start)) return input_error("start " + cell_text(start) + " is outside the map");
+    if (!g.contains(start)) return input_error("start " + to_string(start) + " is outside the map");
     if (world.solid(start)) {
-      return input_error("start " + cell_text(start) + " is inside an obstacle");
+      return input_error("start " + to_string(start) + " is inside an obstacle");
     }
   } else {
     const std::optional<Cell> s = default_start(world);
@@ -148,7 +125,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
   }
   const Cell front = start + kNeighbors4[0];
   if (world.solid(front)) {
-    return input_error("start " + cell_text(start) +
+    return input_error("start " + to_string(start) +
                        ": the cell in front must be free (BOBMapping 3.4)");
   }
 
@@ -181,7 +158,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
   if (const bob::Status s = explorer.start(to_grid(start), bob::Direction::kNorth);
       s != bob::Status::kOk) {
     // Only kFrontBlocked is possible here: the sensors read the free front cell as occupied.
-    return input_error("start " + cell_text(start) +
+    return input_error("start " + to_string(start) +
                        ": the cell in front must be free (BOBMapping 3.4), sensed " +
                        bob::status_name(s));
   }
@@ -198,7 +175,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
     const int h = static_cast<int>(d);
     const Cell next = pos + kNeighbors4[static_cast<std::size_t>(h)];
     if (world.solid(next)) {
-      return runtime_error("the robot drove into an obstacle at " + cell_text(next));
+      return runtime_error("the robot drove into an obstacle at " + to_string(next));
     }
     report(explorer, sense_cells_while_moving(world, g, centred_pose(g, pos, h), sensing, rng));
     pos = next;

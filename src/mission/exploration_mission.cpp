@@ -22,10 +22,6 @@ constexpr std::int64_t kMaxIdleBackoffSteps = 32;
 constexpr std::size_t kMaxSeriesSamples = 8192;
 constexpr std::uint8_t kMaxTargetChoices = 3;
 
-std::string cell_text(Cell c) {
-  return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
-}
-
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
@@ -34,44 +30,23 @@ double seconds_since(Clock::time_point t0) {
 /// component and the first cell in row-major order). Precondition: the world has a free cell.
 Cell default_start(const World& world) {
   const GridGeometry& g = world.geometry();
-  std::vector<std::int32_t> label(g.size(), -1);
-  std::vector<Cell> queue;
-  std::int32_t best_label = -1;
-  std::size_t best_size = 0;
-  double best_cx = 0.0, best_cy = 0.0;
-  std::int32_t next_label = 0;
+  const World::FreeComponents components = world.free_components();
+  const auto largest = std::max_element(components.sizes.begin(), components.sizes.end());
+  TESSERA_ASSERT(largest != components.sizes.end());
+  const auto best_label = static_cast<std::int32_t>(largest - components.sizes.begin());
+  double sum_x = 0.0, sum_y = 0.0;  // sums of integers: exact
   for (std::size_t i = 0; i < g.size(); ++i) {
-    const Cell seed = g.cell_of(i);
-    if (label[i] >= 0 || world.solid(seed)) continue;
-    const std::int32_t l = next_label++;
-    label[i] = l;
-    queue.assign(1, seed);
-    double sum_x = 0.0, sum_y = 0.0;
-    for (std::size_t head = 0; head < queue.size(); ++head) {
-      const Cell c = queue[head];
-      sum_x += c.x;
-      sum_y += c.y;
-      for (const Cell d : kNeighbors4) {
-        const Cell n = c + d;
-        if (world.solid(n)) continue;  // also outside the grid
-        std::int32_t& ln = label[g.index_of(n)];
-        if (ln >= 0) continue;
-        ln = l;
-        queue.push_back(n);
-      }
-    }
-    if (queue.size() > best_size) {
-      best_size = queue.size();
-      best_label = l;
-      best_cx = sum_x / static_cast<double>(queue.size());
-      best_cy = sum_y / static_cast<double>(queue.size());
-    }
+    if (components.label[i] != best_label) continue;
+    const Cell c = g.cell_of(i);
+    sum_x += c.x;
+    sum_y += c.y;
   }
-  TESSERA_ASSERT(best_label >= 0);
+  const double best_cx = sum_x / static_cast<double>(*largest);
+  const double best_cy = sum_y / static_cast<double>(*largest);
   Cell best{};
   double best_d2 = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < g.size(); ++i) {
-    if (label[i] != best_label) continue;
+    if (components.label[i] != best_label) continue;
     const Cell c = g.cell_of(i);
     const double dx = c.x - best_cx, dy = c.y - best_cy;
     const double d2 = dx * dx + dy * dy;
@@ -126,10 +101,10 @@ Result<std::vector<Cell>> exploration_starts(const World& world,
   if (options.start.has_value()) {
     first = *options.start;
     if (!world.geometry().contains(first)) {
-      return input_error("start " + cell_text(first) + " is outside the map");
+      return input_error("start " + to_string(first) + " is outside the map");
     }
     if (world.solid(first)) {
-      return input_error("start " + cell_text(first) + " is inside an obstacle");
+      return input_error("start " + to_string(first) + " is inside an obstacle");
     }
   } else {
     first = default_start(world);
@@ -152,7 +127,7 @@ Result<std::vector<Cell>> exploration_starts(const World& world,
   }
   if (starts.size() < wanted) {
     return input_error("only " + std::to_string(starts.size()) + " free cells are reachable from " +
-                       "start " + cell_text(first) + ", too few for " +
+                       "start " + to_string(first) + ", too few for " +
                        std::to_string(options.robots) + " robots");
   }
   return starts;

@@ -95,4 +95,28 @@ std::vector<std::uint8_t> World::reachable_from(Cell start) const {
   return reached;
 }
 
+World::FreeComponents World::free_components() const {
+  FreeComponents out;
+  out.label.assign(geometry_.size(), -1);
+  std::vector<Cell> queue;
+  for (std::size_t i = 0; i < geometry_.size(); ++i) {
+    if (out.label[i] >= 0 || solid_[i] != 0) continue;
+    const auto k = static_cast<std::int32_t>(out.sizes.size());
+    out.label[i] = k;
+    queue.assign(1, geometry_.cell_of(i));
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      for (const Cell d : kNeighbors4) {
+        const Cell n = queue[head] + d;
+        if (solid(n)) continue;  // also outside the grid
+        std::int32_t& l = out.label[geometry_.index_of(n)];
+        if (l >= 0) continue;
+        l = k;
+        queue.push_back(n);
+      }
+    }
+    out.sizes.push_back(queue.size());
+  }
+  return out;
+}
+
 }  // namespace tessera

@@ -231,5 +231,20 @@ TEST(World, ResampledToAFinerGridCopiesEachCell) {
   }
 }
 
+TEST(World, FreeComponentsAreNumberedInRowMajorOrderOfTheirFirstCell) {
+  // Row 0 is the bottom row: the right pocket's first cell (5, 0) comes before the left room's
+  // (1, 1); a diagonal contact does not join components.
+  const World w = from_ascii({"#####.", "#..#.#", "#..#.#", "####.."}, 1.0);
+  const World::FreeComponents c = w.free_components();
+  ASSERT_EQ(c.sizes.size(), 3u);
+  EXPECT_EQ(c.label[w.geometry().index_of({4, 0})], 0);
+  EXPECT_EQ(c.sizes[0], 4u);  // (4, 0), (5, 0), (4, 1), (4, 2)
+  EXPECT_EQ(c.label[w.geometry().index_of({1, 1})], 1);
+  EXPECT_EQ(c.sizes[1], 4u);
+  EXPECT_EQ(c.label[w.geometry().index_of({5, 3})], 2);
+  EXPECT_EQ(c.sizes[2], 1u);
+  EXPECT_EQ(c.label[w.geometry().index_of({0, 0})], -1);
+}
+
 }  // namespace
 }  // namespace tessera

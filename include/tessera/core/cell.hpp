@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 
 namespace tessera {
 
@@ -28,6 +29,11 @@ inline constexpr std::array<Cell, 8> kNeighbors8{
 /// Manhattan distance in cells.
 [[nodiscard]] constexpr int manhattan(Cell a, Cell b) {
   return (a.x > b.x ? a.x - b.x : b.x - a.x) + (a.y > b.y ? a.y - b.y : b.y - a.y);
+}
+
+/// "(x, y)", for messages.
+[[nodiscard]] inline std::string to_string(Cell c) {
+  return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
 }
 
 struct CellHash {

@@ -49,6 +49,15 @@ class World {
   /// Returns one byte per cell (1 = reachable). Empty start or solid start: all zero.
   [[nodiscard]] std::vector<std::uint8_t> reachable_from(Cell start) const;
 
+  /// The 4-connected components of the free space. label[index_of(c)] is c's component (-1 for a
+  /// solid cell); components are numbered in row-major order of their first cell, and sizes[k]
+  /// counts component k's cells. Cost: O(cells).
+  struct FreeComponents {
+    std::vector<std::int32_t> label;
+    std::vector<std::size_t> sizes;
+  };
+  [[nodiscard]] FreeComponents free_components() const;
+
  private:
   GridGeometry geometry_;
   std::vector<std::uint8_t> solid_;

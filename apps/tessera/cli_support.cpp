@@ -48,6 +48,17 @@ void ProgressLine::finish() {
   shown_ = false;
 }
 
+void add_world_options(CLI::App& command, WorldSource& source) {
+  command.add_option("--world", source.file,
+                     "Ground-truth map: ROS map_server .yaml, Stage .world, Moving AI .map, "
+                     "HouseExpo .json, or a .png/.pgm floor plan (needs --map-resolution-m). "
+                     "Default: the built-in world --builtin.");
+  command.add_option("--builtin", source.builtin, "Built-in world when --world is not given")
+      ->capture_default_str();
+  command.add_option("--map-resolution-m", source.map_resolution_m,
+                     "Cell size of a --world file that carries none (image, Moving AI: 1.0)");
+}
+
 Result<World> load_world(const WorldSource& source, double builtin_resolution_m) {
   if (!source.file) {
     World w = builtin_world(source.builtin, builtin_resolution_m);

@@ -1,5 +1,6 @@
 #pragma once
 // Glue shared by the subcommands: exit codes, error lines, progress on a terminal, loading a world.
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <filesystem>
 #include <optional>
@@ -43,6 +44,9 @@ struct WorldSource {
   std::string builtin = "office";
   std::optional<double> map_resolution_m;  // for files that carry none (images, Moving AI)
 };
+
+/// Adds --world, --builtin and --map-resolution-m, which fill `source`.
+void add_world_options(CLI::App& command, WorldSource& source);
 
 /// Loads the ground-truth world from a map file (any format io::load_map reads) or a built-in one.
 [[nodiscard]] Result<World> load_world(const WorldSource& source, double builtin_resolution_m);

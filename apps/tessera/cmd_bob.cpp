@@ -54,14 +54,7 @@ BobCommand::BobCommand(CLI::App& app) {
       "bob",
       "Simulate the BOBMapping robot (one cell per move, five IR sensors, perfect localisation) "
       "on a world; writes monitor.png, map.bob and report.json to --out.");
-  sub_->add_option("--world", world_.file,
-                   "Ground-truth map: ROS map_server .yaml, Stage .world, Moving AI .map, "
-                   "HouseExpo .json, or a .png/.pgm floor plan (needs --map-resolution-m). "
-                   "Default: the built-in world --builtin");
-  sub_->add_option("--builtin", world_.builtin, "Built-in world when --world is not given")
-      ->capture_default_str();
-  sub_->add_option("--map-resolution-m", world_.map_resolution_m,
-                   "Cell size of a --world file that carries none (image, Moving AI: 1.0)");
+  add_world_options(*sub_, world_);
   sub_->add_option("--cell", cell_m_, "Robot grid cell side in metres (the world is resampled)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -20,14 +20,7 @@ ExploreCommand::ExploreCommand(CLI::App& app) {
       "explore",
       "Simulate robots exploring a world with the frontier algorithm (lecture Algo 9.1); writes "
       "map.yaml + map.pgm, map.png, trajectory.txt and report.json to --out.");
-  sub_->add_option("--world", world_.file,
-                   "Ground-truth map: ROS map_server .yaml, Stage .world, Moving AI .map, "
-                   "HouseExpo .json, or a .png/.pgm floor plan (needs --map-resolution-m). "
-                   "Default: the built-in world.");
-  sub_->add_option("--builtin", world_.builtin, "Built-in world when --world is not given")
-      ->capture_default_str();
-  sub_->add_option("--map-resolution-m", world_.map_resolution_m,
-                   "Cell size of a --world file that carries none (image, Moving AI: 1.0)");
+  add_world_options(*sub_, world_);
   sub_->add_option("--strategy", strategy_, "Frontier choice: nearest (Algo 9.1) or priority (a/d)")
       ->check(CLI::IsMember({"nearest", "priority"}))
       ->capture_default_str();

@@ -23,22 +23,7 @@ int InfoCommand::run() const {
   const OccupancyGrid& map = loaded->map;
   const GridGeometry& g = map.geometry();
 
-  std::size_t free = 0, occupied = 0, unknown = 0;
-  for (int y = 0; y < g.height(); ++y) {
-    for (int x = 0; x < g.width(); ++x) {
-      switch (map.state({x, y})) {
-        case CellState::kFree:
-          ++free;
-          break;
-        case CellState::kOccupied:
-          ++occupied;
-          break;
-        case CellState::kUnknown:
-          ++unknown;
-          break;
-      }
-    }
-  }
+  const CellCounts counts = map.count_states();
   const World world = World::from_map(map);
   const std::size_t packed_bytes =
       static_cast<std::size_t>((g.width() + 7) / 8) * static_cast<std::size_t>(g.height());
@@ -50,9 +35,9 @@ int InfoCommand::run() const {
                       {"resolution_m", g.resolution_m()},
                       {"origin_m", {g.origin().x, g.origin().y}},
                       {"extent_m", {g.width() * g.resolution_m(), g.height() * g.resolution_m()}},
-                      {"free_cells", free},
-                      {"occupied_cells", occupied},
-                      {"unknown_cells", unknown},
+                      {"free_cells", counts.free},
+                      {"occupied_cells", counts.occupied},
+                      {"unknown_cells", counts.unknown},
                       {"memory_bytes_occupancy_grid", map.memory_bytes()},
                       {"memory_bytes_one_bit", packed_bytes},
                       {"world_free_cells", world.free_count()}};
@@ -64,7 +49,8 @@ int InfoCommand::run() const {
   fmt::print("  size        {} x {} cells at {} m ({:.2f} x {:.2f} m), origin ({}, {})\n",
              g.width(), g.height(), g.resolution_m(), g.width() * g.resolution_m(),
              g.height() * g.resolution_m(), g.origin().x, g.origin().y);
-  fmt::print("  cells       {} free, {} occupied, {} unknown\n", free, occupied, unknown);
+  fmt::print("  cells       {} free, {} occupied, {} unknown\n", counts.free, counts.occupied,
+             counts.unknown);
   fmt::print("  memory      {} bytes as an occupancy grid, {} bytes at one bit per cell\n",
              map.memory_bytes(), packed_bytes);
   return kExitOk;

@@ -40,4 +40,19 @@ std::size_t OccupancyGrid::known_count() const {
   return static_cast<std::size_t>(std::count(known_.begin(), known_.end(), std::uint8_t{1}));
 }
 
+CellCounts OccupancyGrid::count_states(double occupied_threshold) const {
+  const float threshold = log_odds(occupied_threshold);
+  CellCounts counts;
+  for (std::size_t i = 0; i < known_.size(); ++i) {
+    if (known_[i] == 0) {
+      ++counts.unknown;
+    } else if (log_odds_[i] >= threshold) {
+      ++counts.occupied;
+    } else {
+      ++counts.free;
+    }
+  }
+  return counts;
+}
+
 }  // namespace tessera

@@ -142,5 +142,19 @@ TEST(SensorModelOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
   EXPECT_NE(validate(o)->find("p_clamp_min"), std::string::npos);
 }
 
+TEST(OccupancyGrid, CountStatesFollowsTheThresholdView) {
+  OccupancyGrid g(GridGeometry({0.0, 0.0}, 1.0, 4, 1));
+  g.set_probability({0, 0}, 0.2);
+  g.set_probability({1, 0}, 0.6);
+  g.set_probability({2, 0}, 0.9);
+  const CellCounts at_half = g.count_states();
+  EXPECT_EQ(at_half.free, 1u);
+  EXPECT_EQ(at_half.occupied, 2u);
+  EXPECT_EQ(at_half.unknown, 1u);
+  const CellCounts at_07 = g.count_states(0.7);  // the lecture's higher threshold
+  EXPECT_EQ(at_07.free, 2u);
+  EXPECT_EQ(at_07.occupied, 1u);
+}
+
 }  // namespace
 }  // namespace tessera

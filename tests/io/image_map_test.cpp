@@ -13,22 +13,6 @@ namespace {
 using io_test::TempDir;
 using ::testing::HasSubstr;
 
-struct Counts {
-  std::size_t free = 0, occupied = 0, unknown = 0;
-};
-Counts count(const OccupancyGrid& g) {
-  Counts c;
-  for (int y = 0; y < g.geometry().height(); ++y) {
-    for (int x = 0; x < g.geometry().width(); ++x) {
-      const CellState s = g.state({x, y});
-      c.free += s == CellState::kFree;
-      c.occupied += s == CellState::kOccupied;
-      c.unknown += s == CellState::kUnknown;
-    }
-  }
-  return c;
-}
-
 TEST(ReadImageMap, PlacesThePictureAtTheOriginWithTheTopRowHighest) {
   TempDir dir;
   GrayImage image(3, 2, 255);
@@ -101,7 +85,7 @@ TEST(ReadImageMap, ReadsRealFloorPlans) {
     Result<OccupancyGrid> g = read_image_map(path, m.resolution_m);
     ASSERT_TRUE(g) << g.error().message;
     EXPECT_EQ(g->geometry(), GridGeometry({0, 0}, m.resolution_m, m.width, m.height)) << m.path;
-    const Counts c = count(*g);
+    const CellCounts c = g->count_states();
     EXPECT_EQ(c.free, m.free) << m.path;
     EXPECT_EQ(c.occupied, m.occupied) << m.path;
     EXPECT_EQ(c.unknown, m.unknown) << m.path;

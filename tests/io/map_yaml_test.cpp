@@ -309,16 +309,9 @@ TEST(ReadMapYaml, ReadsEveryRealMapServerMap) {
     Result<OccupancyGrid> g = read_map_yaml(path);
     ASSERT_TRUE(g) << g.error().message;
     EXPECT_EQ(g->geometry(), GridGeometry(m.origin, m.resolution_m, m.width, m.height)) << m.path;
-    std::size_t free = 0, occupied = 0;
-    for (int y = 0; y < m.height; ++y) {
-      for (int x = 0; x < m.width; ++x) {
-        const CellState s = g->state({x, y});
-        free += s == CellState::kFree;
-        occupied += s == CellState::kOccupied;
-      }
-    }
-    EXPECT_EQ(free, m.free) << m.path;
-    EXPECT_EQ(occupied, m.occupied) << m.path;
+    const CellCounts counts = g->count_states();
+    EXPECT_EQ(counts.free, m.free) << m.path;
+    EXPECT_EQ(counts.occupied, m.occupied) << m.path;
     EXPECT_EQ(g->geometry().size() - g->known_count(), m.unknown) << m.path;
   }
 }

@@ -16,14 +16,6 @@ using io_test::row_text;
 using io_test::TempDir;
 using ::testing::HasSubstr;
 
-std::size_t free_count(const OccupancyGrid& g) {
-  std::size_t n = 0;
-  for (int y = 0; y < g.geometry().height(); ++y) {
-    for (int x = 0; x < g.geometry().width(); ++x) n += g.state({x, y}) == CellState::kFree;
-  }
-  return n;
-}
-
 // A world in a temp folder with the fixture bitmap beside it.
 std::filesystem::path world_with(const TempDir& dir, const std::string& text) {
   std::filesystem::copy_file(io_test::fixture("stage/lab.pgm"), dir / "lab.pgm",
@@ -75,7 +67,7 @@ TEST(ReadStageWorld, AcceptsMacrosStageThreePosesAndBitmapsCopiedBesideTheWorld)
                                   "  size [8 3 0.5]\n)\nplan ( name \"x\" pose [0 0 0 0] )\n"));
   ASSERT_TRUE(macro) << macro.error().message;
   EXPECT_EQ(macro->geometry(), GridGeometry({-4.0, -1.5}, 1.0, 8, 3));
-  EXPECT_EQ(free_count(*macro), 20u);
+  EXPECT_EQ(macro->count_states().free, 20u);
 
   // Stage 3 poses have three values, [x y a].
   Result<OccupancyGrid> stage3 = read_stage_world(
@@ -179,7 +171,7 @@ TEST(ReadStageWorld, ReadsTheRealStageWorlds) {
     EXPECT_NEAR(geo.origin().x, w.origin.x, 1e-9) << w.path;
     EXPECT_NEAR(geo.origin().y, w.origin.y, 1e-9) << w.path;
     EXPECT_EQ(g->known_count(), geo.size()) << w.path;
-    EXPECT_EQ(free_count(*g), w.free) << w.path;
+    EXPECT_EQ(g->count_states().free, w.free) << w.path;
   }
 }
 

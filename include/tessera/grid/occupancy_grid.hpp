@@ -31,6 +31,13 @@ struct SensorModelOptions {
 /// The threshold view of a cell (lecture, "The content of the cells").
 enum class CellState : std::uint8_t { kUnknown = 0, kFree = 1, kOccupied = 2 };
 
+/// How many cells of a grid are in each state of the threshold view.
+struct CellCounts {
+  std::size_t free = 0;
+  std::size_t occupied = 0;
+  std::size_t unknown = 0;
+};
+
 /// Occupancy grid map: one float log-odds value per cell plus "unknown" as its own state (a cell no
 /// sensor has reported on is not the same as p = 0.5). Offers the probability view and the
 /// threshold view of the lecture: with threshold 0.5 more cells count as occupied (objects look
@@ -81,6 +88,8 @@ class OccupancyGrid {
   void apply_miss(Cell c, const SensorModelOptions& model);
 
   [[nodiscard]] std::size_t known_count() const;
+  /// Cells per state of the threshold view state(c, occupied_threshold). Cost: O(cells).
+  [[nodiscard]] CellCounts count_states(double occupied_threshold = 0.5) const;
   /// Bytes the cells take (5 per cell).
   [[nodiscard]] std::size_t memory_bytes() const {
     return log_odds_.size() * sizeof(float) + known_.size();

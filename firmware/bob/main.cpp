@@ -36,16 +36,14 @@ bool solid(GridCell c) {
   return kWorld[kHeight - 1 - c.y][c.x] == '#';
 }
 
+// The whole memory of the explorer: the 4-bit map, which the map-aware search also uses in place
+// (decision 0004), and the 1-bit final map. Neither variant needs scratch.
 std::uint8_t g_map[PackedMap::bytes_needed(kWidth, kHeight)];
 std::uint8_t g_final_map[FinalMap::bytes_needed(kWidth, kHeight)];
 #if BOB_FIRMWARE_MAP_AWARE
 constexpr ExplorerOptions kOptions{tessera::bob::Backtrack::kShortestKnownPath};
-std::uint8_t g_scratch[Explorer::scratch_bytes(kWidth, kHeight)];
-constexpr std::size_t kScratchBytes = sizeof(g_scratch);
 #else
 constexpr ExplorerOptions kOptions{tessera::bob::Backtrack::kTrail};
-std::uint8_t* const g_scratch = nullptr;  // the trail explorer needs no scratch
-constexpr std::size_t kScratchBytes = 0;
 #endif
 Explorer g_explorer;
 
@@ -67,8 +65,7 @@ volatile const std::uint8_t* bob_final_map;
 namespace {
 
 void run_explorer() {
-  Status s =
-      g_explorer.init(kOptions, g_map, sizeof(g_map), kWidth, kHeight, g_scratch, kScratchBytes);
+  Status s = g_explorer.init(kOptions, g_map, sizeof(g_map), kWidth, kHeight);
   if (s == Status::kOk) {
     sense_around(kStart);
     s = g_explorer.start(kStart, Direction::kNorth);

@@ -1,36 +1,60 @@
 #include "tessera/bob/explorer.hpp"
 
-#include "internal/limits.hpp"
-
 namespace tessera::bob {
 namespace {
 
-// A breadth-first queue entry: the cell index in the low 14 bits, the first move of the path that
-// reached the cell in the top 2 bits (so the search needs no per-cell parent array).
-constexpr unsigned kIndexBits = 14;
-constexpr unsigned kIndexMask = (1u << kIndexBits) - 1u;
+// The marks of the in-place search (decision 0004), in the direction bits of known-free cells:
+// 0 = not reached, otherwise 1 + (distance to the nearest target) mod 3. Between searches every
+// direction bit of a kShortestKnownPath map is 0, and during one only known-free cells are marked.
+constexpr unsigned mark_of(unsigned distance) { return 1u + distance % 3u; }
 
-void put_u16(std::uint8_t* p, unsigned v) {
-  p[0] = static_cast<std::uint8_t>(v & 0xFFu);
-  p[1] = static_cast<std::uint8_t>(v >> 8);
+// The first neighbour of c, in N, E, S, W order, that carries `mark`, into `dir`; false if none.
+bool find_marked_neighbor(const PackedMap& map, GridCell c, unsigned mark, Direction& dir) {
+  for (const Direction d : kClockwiseFromNorth) {
+    const GridCell n = step(c, d);
+    if (map.contains(n) && map.direction_bits(n) == mark) {
+      dir = d;
+      return true;
+    }
+  }
+  return false;
 }
-unsigned get_u16(const std::uint8_t* p) { return static_cast<unsigned>(p[0] | (p[1] << 8)); }
+
+// Level `distance` + 1 of the wavefront: marks every unmarked known-free cell next to a cell marked
+// mark_of(distance). False when there was none. O(cells).
+bool grow_wavefront(PackedMap& map, unsigned distance) {
+  bool grew = false;
+  Direction unused = Direction::kNorth;
+  for (int y = 0; y < map.height(); ++y) {
+    for (int x = 0; x < map.width(); ++x) {
+      const GridCell c{x, y};
+      if (map.is_known_free(c) && map.direction_bits(c) == 0 &&
+          find_marked_neighbor(map, c, mark_of(distance), unused)) {
+        map.set_direction_bits(c, mark_of(distance + 1));
+        grew = true;
+      }
+    }
+  }
+  return grew;
+}
+
+void clear_marks(PackedMap& map) {
+  for (int y = 0; y < map.height(); ++y) {
+    for (int x = 0; x < map.width(); ++x) {
+      if (map.is_known_free({x, y})) map.set_direction_bits({x, y}, 0);
+    }
+  }
+}
 
 }  // namespace
 
 Status Explorer::init(const ExplorerOptions& options, std::uint8_t* map_buffer,
                       std::size_t map_buffer_bytes, int width_cells, int height_cells,
-                      std::uint8_t* scratch, std::size_t scratch_buffer_bytes) {
+                      std::uint8_t* /*scratch*/, std::size_t /*scratch_buffer_bytes*/) {
   *this = Explorer{};
   const Status s = map_.init(map_buffer, map_buffer_bytes, width_cells, height_cells);
   if (s != Status::kOk) return s;
-  if (options.backtrack == Backtrack::kShortestKnownPath &&
-      (scratch == nullptr || scratch_buffer_bytes < scratch_bytes(width_cells, height_cells))) {
-    map_ = PackedMap{};
-    return Status::kBufferTooSmall;
-  }
   options_ = options;
-  scratch_ = scratch;
   unsensed_ = map_.cell_count();
   initialised_ = true;
   return Status::kOk;
@@ -78,7 +102,7 @@ Status Explorer::start(GridCell cell, Direction heading) {
     return Status::kFrontBlocked;
   }
   if (map_.state(cell) == CellState::kUnsensed) --unsensed_;
-  map_.set_visited(cell, heading);
+  map_.set_visited(cell, recorded(heading));
   if (map_.state(front) == CellState::kUnsensed) mark_sensed(front, CellState::kFree);
   start_ = position_ = cell;
   heading_ = heading;
@@ -102,44 +126,44 @@ bool Explorer::check_neighbors(Direction& dir) const {
   return false;
 }
 
+Direction Explorer::recorded(Direction reached_by) const {
+  return options_.backtrack == Backtrack::kTrail ? reached_by : Direction::kNorth;
+}
+
+// explorable(c), or the start cell (always kVisited) by the rule in explorer.hpp; written without
+// calling explorable() to keep the firmware's deepest call chain, which runs through here, short.
+bool Explorer::is_target(GridCell c) const {
+  const CellState s = map_.state(c);
+  return (s == CellState::kFree || (c == start_ && !start_reentered_)) &&
+         map_.has_unsensed_neighbor(c);
+}
+
+// A breadth-first wavefront from every target at once (a multi-source Lee expansion), marked in
+// place with distances mod 3 (decision 0004). Mod 3 is enough: the cells next to a cell at distance
+// d are at d - 1, d or d + 1, so when level d + 1 grows from the cells marked mark_of(d), the only
+// other cells with that mark lie at d - 3, d - 6, ..., whose neighbours are all marked already. If
+// the robot is K from the nearest target, its neighbours are at least K - 1 from any target; the
+// first level that holds one of them is K - 1, and the ones it holds are exactly the neighbours on
+// a shortest path to a nearest target. Taking the first of them in N, E, S, W order gives the same
+// move as a breadth-first search from the robot that expands N, E, S, W and stops at its first
+// target. The robot's own cell is never a target: the search starts where the robot stands.
 bool Explorer::first_step_to_nearest_explorable(Direction& dir) {
-  const int n = map_.cell_count();
-  std::uint8_t* const queue = scratch_;
-  std::uint8_t* const seen = scratch_ + 2 * n;
-  for (int i = 0; i < (n + 7) / 8; ++i) seen[i] = 0;
-  const auto test_and_set = [seen](int index) {
-    const auto bit = static_cast<std::uint8_t>(1u << (index % 8));
-    const bool was = (seen[index / 8] & bit) != 0;
-    seen[index / 8] = static_cast<std::uint8_t>(seen[index / 8] | bit);
-    return was;
-  };
-  int head = 0;
-  int tail = 0;
-  (void)test_and_set(map_.index_of(position_));
-  for (const Direction d : kClockwiseFromNorth) {
-    const GridCell c = step(position_, d);
-    if (map_.is_known_free(c) && !test_and_set(map_.index_of(c))) {
-      put_u16(queue + 2 * tail++,
-              static_cast<unsigned>(map_.index_of(c)) | (static_cast<unsigned>(d) << kIndexBits));
-    }
-  }
-  while (head < tail) {
-    const unsigned entry = get_u16(queue + 2 * head++);
-    const GridCell c = map_.cell_of(static_cast<int>(entry & kIndexMask));
-    const unsigned first = entry >> kIndexBits;
-    if (explorable(c) || (c == start_ && !start_reentered_ && map_.has_unsensed_neighbor(c))) {
-      dir = static_cast<Direction>(first);
-      return true;
-    }
-    for (const Direction d : kClockwiseFromNorth) {
-      const GridCell nb = step(c, d);
-      if (map_.is_known_free(nb) && !test_and_set(map_.index_of(nb))) {
-        put_u16(queue + 2 * tail++,
-                static_cast<unsigned>(map_.index_of(nb)) | (first << kIndexBits));
+  for (int y = 0; y < map_.height(); ++y) {
+    for (int x = 0; x < map_.width(); ++x) {
+      const GridCell c{x, y};
+      if (map_.is_known_free(c) && !(c == position_) && is_target(c)) {
+        map_.set_direction_bits(c, mark_of(0));
       }
     }
   }
-  return false;
+  unsigned distance = 0;
+  bool found = false;
+  while (!(found = find_marked_neighbor(map_, position_, mark_of(distance), dir)) &&
+         grow_wavefront(map_, distance)) {
+    ++distance;
+  }
+  clear_marks(map_);
+  return found;
 }
 
 void Explorer::commit_move(Direction dir) {
@@ -152,7 +176,7 @@ void Explorer::commit_move(Direction dir) {
   ++moves_;
   if (position_ == start_) start_reentered_ = true;
   // BOBMapping Code 1 line 11, MarkTrack: the first arrival stores the move that reached the cell.
-  if (map_.state(position_) != CellState::kVisited) map_.set_visited(position_, dir);
+  if (map_.state(position_) != CellState::kVisited) map_.set_visited(position_, recorded(dir));
 }
 
 // BOBMapping Code 1, one iteration of the DO ... WHILE loop.

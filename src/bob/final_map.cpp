@@ -6,12 +6,10 @@ namespace tessera::bob {
 
 Status FinalMap::init(std::uint8_t* buffer, std::size_t buffer_bytes, int width_cells,
                       int height_cells) {
-  buffer_ = nullptr;
-  width_ = height_ = 0;
-  if (!internal::valid_grid_size(width_cells, height_cells)) return Status::kBadSize;
-  const std::size_t bytes = bytes_needed(width_cells, height_cells);
-  if (buffer == nullptr || buffer_bytes < bytes) return Status::kBufferTooSmall;
-  internal::zero_bytes(buffer, bytes);
+  *this = FinalMap{};
+  const Status s =
+      internal::clear_grid_buffer(buffer, buffer_bytes, width_cells, height_cells, &bytes_needed);
+  if (s != Status::kOk) return s;
   buffer_ = buffer;
   width_ = width_cells;
   height_ = height_cells;

@@ -29,12 +29,10 @@ constexpr std::uint8_t code_of(CellState s) {
 
 Status PackedMap::init(std::uint8_t* buffer, std::size_t buffer_bytes, int width_cells,
                        int height_cells) {
-  buffer_ = nullptr;
-  width_ = height_ = 0;
-  if (!internal::valid_grid_size(width_cells, height_cells)) return Status::kBadSize;
-  const std::size_t bytes = bytes_needed(width_cells, height_cells);
-  if (buffer == nullptr || buffer_bytes < bytes) return Status::kBufferTooSmall;
-  internal::zero_bytes(buffer, bytes);
+  *this = PackedMap{};
+  const Status s =
+      internal::clear_grid_buffer(buffer, buffer_bytes, width_cells, height_cells, &bytes_needed);
+  if (s != Status::kOk) return s;
   buffer_ = buffer;
   width_ = width_cells;
   height_ = height_cells;
@@ -69,7 +67,16 @@ CellState PackedMap::state(GridCell c) const {
 }
 
 Direction PackedMap::came_from(GridCell c) const {
-  return static_cast<Direction>((nibble(c) >> kDirectionShift) & 0x3);
+  return static_cast<Direction>(direction_bits(c));
+}
+
+unsigned PackedMap::direction_bits(GridCell c) const {
+  return (static_cast<unsigned>(nibble(c)) >> kDirectionShift) & 0x3u;
+}
+
+void PackedMap::set_direction_bits(GridCell c, unsigned bits) {
+  set_nibble(
+      c, static_cast<std::uint8_t>((nibble(c) & kStateMask) | ((bits & 0x3u) << kDirectionShift)));
 }
 
 void PackedMap::set_state(GridCell c, CellState s) {

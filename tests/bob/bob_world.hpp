@@ -97,7 +97,6 @@ struct ExplorationRun {
   bool hit_wall = false;              // a move into a solid cell (must never happen)
   std::vector<std::uint8_t> mapping;  // the packed 4-bit map at the end
   std::vector<std::uint8_t> final_map;
-  std::vector<std::uint8_t> scratch;
   Explorer explorer;  // holds a pointer into `mapping`: valid while this ExplorationRun lives, not
                       // copied
 };
@@ -108,10 +107,9 @@ inline void explore(const TextGrid& world, Direction heading, Backtrack backtrac
   const int w = world.width();
   const int h = world.height();
   run.mapping.assign(PackedMap::bytes_needed(w, h), 0);
-  run.scratch.assign(Explorer::scratch_bytes(w, h), 0);
   Explorer& ex = run.explorer;
-  run.start_status = ex.init(ExplorerOptions{backtrack}, run.mapping.data(), run.mapping.size(), w,
-                             h, run.scratch.data(), run.scratch.size());
+  run.start_status =
+      ex.init(ExplorerOptions{backtrack}, run.mapping.data(), run.mapping.size(), w, h);
   if (run.start_status != Status::kOk) return;
   GridCell pos = world.find('R');
   sense_exact(ex, world, pos, heading, layout);

@@ -19,10 +19,9 @@ using bobtest::TextGrid;
 class Knowledge {
  public:
   Knowledge(const TextGrid& drawn, Direction heading, Backtrack backtrack = Backtrack::kTrail)
-      : map_(PackedMap::bytes_needed(drawn.width(), drawn.height())),
-        scratch_(Explorer::scratch_bytes(drawn.width(), drawn.height())) {
+      : map_(PackedMap::bytes_needed(drawn.width(), drawn.height())) {
     EXPECT_EQ(explorer_.init(ExplorerOptions{backtrack}, map_.data(), map_.size(), drawn.width(),
-                             drawn.height(), scratch_.data(), scratch_.size()),
+                             drawn.height()),
               Status::kOk);
     for (int y = 0; y < drawn.height(); ++y) {
       for (int x = 0; x < drawn.width(); ++x) {
@@ -38,7 +37,6 @@ class Knowledge {
 
  private:
   std::vector<std::uint8_t> map_;
-  std::vector<std::uint8_t> scratch_;
   Explorer explorer_;
 };
 
@@ -117,6 +115,78 @@ TEST(Explorer, MapAwareVariantAlsoTakesCodeTwoChoicesFirst) {
   EXPECT_EQ(next(k.explorer()), Direction::kEast);
 }
 
+// Every direction bit of a kShortestKnownPath map is 0 between calls (decision 0004).
+void expect_no_marks(const PackedMap& map) {
+  for (int y = 0; y < map.height(); ++y) {
+    for (int x = 0; x < map.width(); ++x) {
+      EXPECT_EQ(map.direction_bits({x, y}), 0u) << x << "," << y;
+    }
+  }
+}
+
+// No neighbour of the robot qualifies. The corridor North leads to a target three cells away (the
+// '.' below the '?'), the one East to a target two cells away: the nearest target wins over the
+// clockwise order.
+TEST(Explorer, MapAwareBacktrackingHeadsForTheNearestTarget) {
+  const TextGrid drawn({
+      "###?###",
+      "###.###",
+      "###.###",
+      "###.###",
+      "#..R..?",
+      "#######",
+  });
+  Knowledge k(drawn, Direction::kNorth, Backtrack::kShortestKnownPath);
+  EXPECT_EQ(next(k.explorer()), Direction::kEast);
+  expect_no_marks(k.explorer().map());
+}
+
+// The same with both targets two cells away: the tie goes to the first move in N, E, S, W order.
+TEST(Explorer, MapAwareBacktrackingBreaksATieBetweenTargetsNorthFirst) {
+  const TextGrid drawn({
+      "###?###",
+      "###.###",
+      "###.###",
+      "#..R..?",
+      "#######",
+  });
+  Knowledge k(drawn, Direction::kNorth, Backtrack::kShortestKnownPath);
+  EXPECT_EQ(next(k.explorer()), Direction::kNorth);
+  expect_no_marks(k.explorer().map());
+}
+
+// One target, two shortest paths to it (North then East, East then North): North first.
+TEST(Explorer, MapAwareBacktrackingBreaksATieBetweenPathsNorthFirst) {
+  const TextGrid drawn({
+      "#####",
+      "#..?#",
+      "#R.##",
+      "#####",
+  });
+  Knowledge k(drawn, Direction::kNorth, Backtrack::kShortestKnownPath);
+  EXPECT_EQ(next(k.explorer()), Direction::kNorth);
+  EXPECT_EQ(next(k.explorer()), Direction::kEast);  // Code 2: the cell next to the '?'
+}
+
+// The search marks the map in place and clears it again; the robot never leans on stale marks.
+TEST(Explorer, MapAwareRunLeavesNoSearchMarksInTheMap) {
+  const TextGrid world({
+      "###########",
+      "#.#...#...#",
+      "#.#.#.#.#.#",
+      "#...#...#.#",
+      "###.#####.#",
+      "#R........#",
+      "###########",
+  });
+  bobtest::ExplorationRun run;
+  bobtest::explore(world, Direction::kEast, Backtrack::kShortestKnownPath,
+                   bobtest::SensorLayout::kFourNeighbors, run);
+  EXPECT_EQ(run.stop_reason, StopReason::kNoReachableTarget);
+  EXPECT_FALSE(run.hit_wall);
+  expect_no_marks(run.explorer.map());
+}
+
 // Section 3.4: "the sensor structure requires the robot to be initially positioned in a cell whose
 // frontal neighbor is unoccupied".
 TEST(Explorer, StartingFacingAWallIsRefusedWithFrontBlocked) {
@@ -150,18 +220,17 @@ TEST(Explorer, StartOutsideTheGridOrBeforeInitIsAnError) {
   EXPECT_EQ(ex.sense({-1, 0}, true), Status::kOutOfBounds);
 }
 
-TEST(Explorer, MapAwareVariantNeedsItsScratchBuffer) {
+// Decision 0004: the map-aware search runs in the map's direction bits, so neither variant needs
+// scratch memory; a scratch buffer passed by an older caller is ignored.
+TEST(Explorer, MapAwareVariantNeedsNoScratchBuffer) {
+  EXPECT_EQ(Explorer::scratch_bytes(11, 14), 0u);
   std::vector<std::uint8_t> map(PackedMap::bytes_needed(11, 14));
-  std::vector<std::uint8_t> scratch(Explorer::scratch_bytes(11, 14) - 1);
-  EXPECT_EQ(Explorer::scratch_bytes(11, 14), 328u);
   Explorer ex;
   const ExplorerOptions options{Backtrack::kShortestKnownPath};
-  EXPECT_EQ(ex.init(options, map.data(), map.size(), 11, 14), Status::kBufferTooSmall);
-  EXPECT_EQ(ex.init(options, map.data(), map.size(), 11, 14, scratch.data(), scratch.size()),
-            Status::kBufferTooSmall);
-  scratch.push_back(0);
-  EXPECT_EQ(ex.init(options, map.data(), map.size(), 11, 14, scratch.data(), scratch.size()),
-            Status::kOk);
+  EXPECT_EQ(ex.init(options, map.data(), map.size(), 11, 14), Status::kOk);
+  std::uint8_t unused[4] = {};
+  EXPECT_EQ(ex.init(options, map.data(), map.size(), 11, 14, unused, sizeof unused), Status::kOk);
+  EXPECT_EQ(ex.init(options, map.data(), map.size() - 1, 11, 14), Status::kBufferTooSmall);
 }
 
 // Section 3.4 re-sensing: a later reading changes a sensed cell, except that a visited cell never

@@ -59,6 +59,25 @@ TEST(PackedMap, EachCellKeepsItsOwnStateAndDirectionWithoutTouchingItsNeighbours
   EXPECT_EQ(map.state({4, 1}), CellState::kUnsensed);
 }
 
+// The map-aware search keeps its marks in the two direction bits (decision 0004).
+TEST(PackedMap, DirectionBitsAreWrittenWithoutTouchingTheState) {
+  std::vector<std::uint8_t> buf(PackedMap::bytes_needed(3, 1));
+  PackedMap map;
+  ASSERT_EQ(map.init(buf.data(), buf.size(), 3, 1), Status::kOk);
+  map.set_state({0, 0}, CellState::kFree);
+  map.set_visited({1, 0}, Direction::kSouth);
+  map.set_direction_bits({0, 0}, 3);
+  map.set_direction_bits({1, 0}, 1);
+  EXPECT_EQ(map.state({0, 0}), CellState::kFree);
+  EXPECT_EQ(map.direction_bits({0, 0}), 3u);
+  EXPECT_EQ(map.state({1, 0}), CellState::kVisited);
+  EXPECT_EQ(map.came_from({1, 0}), Direction::kEast);
+  EXPECT_EQ(map.state({2, 0}), CellState::kUnsensed);
+  EXPECT_EQ(map.direction_bits({2, 0}), 0u);
+  map.set_direction_bits({0, 0}, 0);
+  EXPECT_EQ(buf[0], 0x52);  // (1, 0): 0b0101, visited reached East; (0, 0): 0b0010, free
+}
+
 // The layout of section 3.4 with "visited" in the code the paper leaves unused (not sensed,
 // occupancy bit set): cell (x, y) is nibble x % 2 of byte y * 3 + x / 2 for a 5-wide grid.
 TEST(PackedMap, NibblesFollowTheDocumentedBitLayout) {

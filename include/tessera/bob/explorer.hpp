@@ -31,8 +31,10 @@ enum class StopReason : std::uint8_t {
 ///  2. Code 2: moves to the first explorable neighbour in clockwise order from North;
 ///  3. otherwise backtracks: kTrail moves one cell opposite to the stored "reached by" direction,
 ///     or stops at the start cell (condition i); kShortestKnownPath takes the first step of a
-///     shortest path through known-free cells to the nearest explorable cell (ties broken by the
-///     same N, E, S, W order), or stops when there is none.
+///     shortest path through known-free cells to the nearest explorable cell, or stops when there
+///     is none. Tie-break: the first move in N, E, S, W order that starts a shortest path to
+///     any of the nearest targets (the same move as a breadth-first search from the robot that
+///     expands neighbours N, E, S, W and stops at its first target).
 /// The move is committed at once: position(), heading() and the map assume the robot has done
 /// it. The caller then reports what its sensors saw on the way with sense(), and asks again.
 ///
@@ -52,23 +54,30 @@ enum class StopReason : std::uint8_t {
 /// Protocol: init(); sense() what the sensors see at the start pose; start(); then loop
 /// { next_move(); move the robot; sense() on the way } until next_move() returns kFinished.
 ///
-/// Cost: next_move() is O(1) with kTrail and O(cells) with kShortestKnownPath; sense() is O(1).
-/// Memory: the packed map (PackedMap::bytes_needed) plus, for kShortestKnownPath, scratch_bytes().
+/// The kShortestKnownPath search runs in place, in the two direction bits of the packed map that
+/// only kTrail reads (decision 0004): a wavefront from all targets at once marks each known-free
+/// cell with 1 + (its distance to the nearest target) mod 3 until it reaches a neighbour of the
+/// robot, then clears the marks. It needs no memory beyond the map, but a kShortestKnownPath
+/// explorer records no "reached by" directions: map().came_from() is meaningful with kTrail only.
+///
+/// Cost: sense() is O(1); next_move() is O(1) with kTrail and when a neighbour qualifies, and
+/// O(cells x (K + 1)) when kShortestKnownPath backtracks, K the distance to the nearest target.
+/// Memory: the packed map (PackedMap::bytes_needed) for either variant.
 class Explorer {
  public:
-  /// Scratch kShortestKnownPath needs: a queue of 2 bytes per cell and 1 seen bit per cell.
-  /// 11 x 14 -> 328 bytes. kTrail needs none.
-  [[nodiscard]] static constexpr std::size_t scratch_bytes(int width_cells, int height_cells) {
-    const std::size_t n =
-        static_cast<std::size_t>(width_cells) * static_cast<std::size_t>(height_cells);
-    return 2u * n + (n + 7u) / 8u;
+  /// Scratch the explorer needs besides the map: none for either variant (the map-aware search
+  /// used a queue here until decision 0004). Kept so that callers sized by it still compile.
+  [[nodiscard]] static constexpr std::size_t scratch_bytes(int /*width_cells*/,
+                                                           int /*height_cells*/) {
+    return 0;
   }
 
   constexpr Explorer() = default;
 
   /// Sets up a width x height grid of unsensed cells in `map_buffer`
-  /// (PackedMap::bytes_needed bytes). `scratch` may be null with kTrail. kBadSize,
-  /// kBufferTooSmall on bad arguments; the explorer is then unusable.
+  /// (PackedMap::bytes_needed bytes). `scratch` and `scratch_buffer_bytes` are ignored (see
+  /// scratch_bytes(); they may be null and 0). kBadSize, kBufferTooSmall on a bad map; the
+  /// explorer is then unusable.
   [[nodiscard]] Status init(const ExplorerOptions& options, std::uint8_t* map_buffer,
                             std::size_t map_buffer_bytes, int width_cells, int height_cells,
                             std::uint8_t* scratch = nullptr, std::size_t scratch_buffer_bytes = 0);
@@ -117,14 +126,19 @@ class Explorer {
   /// Code 2: first explorable neighbour clockwise from North; false when there is none.
   [[nodiscard]] bool check_neighbors(Direction& dir) const;
   [[nodiscard]] bool explorable(GridCell c) const;
-  /// First step of a shortest known-free path to the nearest explorable cell.
+  /// A cell kShortestKnownPath heads for: explorable, or the start cell by the rule above.
+  /// Precondition: map_.contains(c).
+  [[nodiscard]] bool is_target(GridCell c) const;
+  /// First step of a shortest known-free path to the nearest target; false when none is reachable.
   [[nodiscard]] bool first_step_to_nearest_explorable(Direction& dir);
+  /// The "reached by" direction to store in a newly visited cell: `reached_by` with kTrail,
+  /// kNorth (bits 0) with kShortestKnownPath, whose search owns those bits.
+  [[nodiscard]] Direction recorded(Direction reached_by) const;
   void commit_move(Direction dir);
   void mark_sensed(GridCell c, CellState s);
 
   ExplorerOptions options_{};
   PackedMap map_{};
-  std::uint8_t* scratch_ = nullptr;
   GridCell start_{};
   GridCell position_{};
   Direction heading_ = Direction::kNorth;

@@ -11,9 +11,9 @@ enum class Backtrack : std::uint8_t {
   /// The paper's Tremaux backtracking: one cell back along the stored "reached by" directions per
   /// step; stops back at the start cell with no explorable neighbour (section 3.4, condition i).
   kTrail,
-  /// Uses the map already built: the shortest known-free path (breadth-first search in a caller
-  /// buffer) to the nearest explorable cell; stops when none is reachable. Needs
-  /// Explorer::scratch_bytes() of scratch.
+  /// Uses the map already built: the shortest known-free path to the nearest explorable cell,
+  /// found in place in the map's direction bits (no scratch memory, decision 0004); stops when
+  /// none is reachable.
   kShortestKnownPath,
 };
 

@@ -36,6 +36,11 @@ enum class CellState : std::uint8_t {
 ///                                 the start heading and is never used: backtracking ends there)
 /// A visited cell counts as sensed and empty everywhere (is_sensed, is_known_free, the final map).
 ///
+/// Only the paper's trail backtracking (Backtrack::kTrail) reads the direction of a visited cell.
+/// The map-aware explorer (Backtrack::kShortestKnownPath) stores none and uses the two bits of
+/// every known-free cell as the marks of its in-place path search instead (explorer.hpp,
+/// decision 0004); they are zero between its calls. direction_bits() gives raw access to them.
+///
 /// Layout: cell (x, y) is the nibble x % 2 (low nibble for even x) of byte y * bytes_per_row() +
 /// x / 2. Cell (0,0) is the lower-left cell, x the column, y the row (docs/conventions.md).
 class PackedMap {
@@ -78,8 +83,15 @@ class PackedMap {
 
   /// State of c. Precondition: contains(c).
   [[nodiscard]] CellState state(GridCell c) const;
-  /// The move that reached c. Meaningful only for kVisited cells. Precondition: contains(c).
+  /// The move that reached c. Meaningful only for kVisited cells of a kTrail explorer.
+  /// Precondition: contains(c).
   [[nodiscard]] Direction came_from(GridCell c) const;
+  /// The two direction bits of c as a number 0-3, whatever the state (came_from() of a visited
+  /// cell). Precondition: contains(c).
+  [[nodiscard]] unsigned direction_bits(GridCell c) const;
+  /// Writes the two direction bits of c (bits 0-1 of `bits`), keeping the state.
+  /// Precondition: contains(c).
+  void set_direction_bits(GridCell c, unsigned bits);
 
   /// Precondition: contains(c). Writes the state, keeping the direction bits.
   void set_state(GridCell c, CellState s);

@@ -10,8 +10,8 @@ namespace tessera::bob {
 enum class Status : std::uint8_t {
   kOk = 0,
   kFinished,        // the explorer has stopped; see Explorer::stop_reason()
-  kBadSize,         // width or height < 1, or more cells than the core can index (16384)
-  kBufferTooSmall,  // a caller-supplied buffer is smaller than bytes_needed()/scratch_bytes()
+  kBadSize,         // width or height < 1, or more cells than the core takes (16384)
+  kBufferTooSmall,  // a caller-supplied buffer is null or smaller than bytes_needed()
   kOutOfBounds,     // a cell outside the grid
   kFrontBlocked,    // start cell's front neighbour is occupied or outside the grid (section 3.4)
   kNotStarted,      // next_move() before start(), or start() before init()

@@ -57,7 +57,32 @@ void add_world_options(CLI::App& command, WorldSource& source) {
       ->capture_default_str();
   command.add_option("--map-resolution-m", source.map_resolution_m,
                      "Cell size of a --world file that carries none (image, Moving AI: 1.0)");
+  command.add_option("--crop", source.crop,
+                     "X0,Y0,X1,Y1 in metres: use only this rectangle of the world (a room cut "
+                     "from a floor plan); its edge bounds the space");
 }
+
+namespace {
+
+Result<World> crop_world(const World& world, const std::string& text) {
+  std::istringstream in(text);
+  double v[4] = {};
+  char comma[3] = {};
+  if (!(in >> v[0] >> comma[0] >> v[1] >> comma[1] >> v[2] >> comma[2] >> v[3]) ||
+      comma[0] != ',' || comma[1] != ',' || comma[2] != ',' || !(in >> std::ws).eof()) {
+    return usage_error(fmt::format("--crop expects X0,Y0,X1,Y1 in metres, got '{}'", text));
+  }
+  if (!(v[2] > v[0] && v[3] > v[1])) {
+    return usage_error(fmt::format("--crop {}: needs X1 > X0 and Y1 > Y0", text));
+  }
+  World cropped = world.cropped({v[0], v[1]}, {v[2], v[3]});
+  if (cropped.free_count() == 0) {
+    return input_error(fmt::format("--crop {}: no free cell of the world inside it", text));
+  }
+  return cropped;
+}
+
+}  // namespace
 
 Result<World> load_world(const WorldSource& source, double builtin_resolution_m) {
   if (!source.file) {
@@ -68,13 +93,21 @@ Result<World> load_world(const WorldSource& source, double builtin_resolution_m)
       return usage_error(
           fmt::format("unknown built-in world '{}' (built-in worlds: {})", source.builtin, names));
     }
-    return w;
+    return source.crop ? crop_world(w, *source.crop) : Result<World>(std::move(w));
   }
   MapLoadOptions options;
   options.resolution_m = source.map_resolution_m;
   Result<LoadedMap> loaded = load_map(*source.file, options);
   if (!loaded) return loaded.error();
-  return World::from_map(loaded->map, 0.5, source.file->string());
+  World w = World::from_map(loaded->map, 0.5, source.file->string());
+  if (!source.crop) return w;
+  Result<World> cropped = crop_world(w, *source.crop);
+  if (!cropped) {
+    Error e = cropped.error();
+    if (e.kind == ErrorKind::kInput) e.message = source.file->string() + ": " + e.message;
+    return e;
+  }
+  return cropped;
 }
 
 Result<Vec2> parse_point(const std::string& text, const std::string& option) {

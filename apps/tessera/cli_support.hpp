@@ -43,12 +43,14 @@ struct WorldSource {
   std::optional<std::filesystem::path> file;  // empty: the built-in world
   std::string builtin = "office";
   std::optional<double> map_resolution_m;  // for files that carry none (images, Moving AI)
+  std::optional<std::string> crop;         // "X0,Y0,X1,Y1" in metres
 };
 
-/// Adds --world, --builtin and --map-resolution-m, which fill `source`.
+/// Adds --world, --builtin, --map-resolution-m and --crop, which fill `source`.
 void add_world_options(CLI::App& command, WorldSource& source);
 
-/// Loads the ground-truth world from a map file (any format io::load_map reads) or a built-in one.
+/// Loads the ground-truth world from a map file (any format io::load_map reads) or a built-in one,
+/// cropped to source.crop when given (usage error for a malformed or empty rectangle).
 [[nodiscard]] Result<World> load_world(const WorldSource& source, double builtin_resolution_m);
 
 /// "3.5,2" -> {3.5, 2}; usage error otherwise.

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "commands.hpp"
@@ -14,6 +15,10 @@
 
 namespace tessera::cli {
 namespace {
+
+// Built-in worlds are drawn at this resolution, finer than the robot's cells, so that their
+// obstacles straddle cell boundaries as real ones do.
+constexpr double kBuiltinResolutionM = 0.05;
 
 const char* stop_reason_name(bob::StopReason r) {
   switch (r) {
@@ -36,6 +41,9 @@ nlohmann::json row_json(const BobTableRow& r) {
           {"empty_as_occupied", r.empty_as_occupied},
           {"occupied_as_empty", r.occupied_as_empty},
           {"success_rate", r.success_rate},
+          {"empty_as_occupied_strict", r.empty_as_occupied_strict},
+          {"occupied_as_empty_strict", r.occupied_as_empty_strict},
+          {"success_rate_strict", r.success_rate_strict},
           {"path_cells", r.path_cells},
           {"turns", r.turns},
           {"visited_cells", r.visited_cells},
@@ -47,23 +55,42 @@ nlohmann::json row_json(const BobTableRow& r) {
           {"path_per_smartdfs_bound", r.path_per_smartdfs}};
 }
 
+nlohmann::json localisation_json(const BobLocalisationStats& s) {
+  return {{"fixes", s.fixes},
+          {"failed_fixes", s.failed_fixes},
+          {"repositionings", s.repositionings},
+          {"unresolved_steps", s.unresolved_steps},
+          {"bumps", s.bumps},
+          {"collisions", s.collisions},
+          {"mean_fix_error_m", s.mean_fix_error_m},
+          {"max_drift_m", s.max_drift_m},
+          {"max_position_error_m", s.max_position_error_m},
+          {"max_heading_error_deg", s.max_heading_error_rad * 180.0 / std::numbers::pi}};
+}
+
 }  // namespace
 
 BobCommand::BobCommand(CLI::App& app) {
   sub_ = app.add_subcommand(
       "bob",
-      "Simulate the BOBMapping robot (one cell per move, five IR sensors, perfect localisation) "
-      "on a world; writes monitor.png, map.bob and report.json to --out.");
+      "Simulate the BOBMapping robot (one cell per move, five IR sensors, wheel encoders and "
+      "ceiling beacons) on a world; writes monitor.png, map.bob and report.json to --out.");
   add_world_options(*sub_, world_);
-  sub_->add_option("--cell", cell_m_, "Robot grid cell side in metres (the world is resampled)")
+  sub_->add_option("--cell", cell_m_,
+                   "Side of the robot's cells in metres, laid over the world from its origin")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   sub_->add_option("--variant", variant_,
                    "trail (the paper's backtracking) or map-aware (shortest known path)")
       ->check(CLI::IsMember({"trail", "map-aware"}))
       ->capture_default_str();
-  sub_->add_option("--noise", noise_, "IR sensor noise on or off")
+  sub_->add_option("--noise", noise_, "Noise of the IR sensors, encoders and beacons: on or off")
       ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  sub_->add_option("--localisation", localisation_,
+                   "beacons (encoders between ultrasonic fixes, BOBMapping 3.3) or perfect "
+                   "(exact motion, the true pose known)")
+      ->check(CLI::IsMember({"beacons", "perfect"}))
       ->capture_default_str();
   sub_->add_option("--seed", seed_, "Seed for every random draw")->capture_default_str();
   sub_->add_option("--start", start_,
@@ -75,22 +102,23 @@ BobCommand::BobCommand(CLI::App& app) {
 }
 
 int BobCommand::run() const {
-  Result<World> loaded = load_world(world_, cell_m_);
+  Result<World> loaded = load_world(world_, kBuiltinResolutionM);
   if (!loaded) return report_error(loaded.error());
-  World world = std::move(loaded).value();
+  const World world = std::move(loaded).value();
   const std::string world_name = world_.file ? world_.file->string() : "builtin:" + world_.builtin;
-  if (std::abs(world.geometry().resolution_m() - cell_m_) > 1e-9) {
-    world = world.resampled(cell_m_);
-  }
+  // The robot's grid, as run_bob lays it over the world.
+  const GridGeometry cells = world.resampled(cell_m_).geometry();
 
   BobMissionOptions options;
   options.variant = variant_ == "map-aware" ? BobVariant::kMapAware : BobVariant::kTrail;
   options.noise = noise_ == "on";
   options.seed = seed_;
+  options.cell_m = cell_m_;
+  options.perfect_localisation = localisation_ == "perfect";
   if (start_) {
     Result<Vec2> p = parse_point(*start_, "--start");
     if (!p) return report_error(p.error());
-    options.start = world.geometry().cell_at_unchecked(*p);
+    options.start = cells.cell_at_unchecked(*p);
   }
 
   Result<BobResult> result = run_bob(world, options);
@@ -104,7 +132,7 @@ int BobCommand::run() const {
   BobMapFile map_file;
   map_file.width = r.width;
   map_file.height = r.height;
-  map_file.cell_mm = static_cast<int>(std::lround(world.geometry().resolution_m() * 1000.0));
+  map_file.cell_mm = static_cast<int>(std::lround(cell_m_ * 1000.0));
   map_file.rows = r.final_map;
   Result<std::string> map_bytes = encode_bob_map(map_file);
   if (!map_bytes) return report_error(runtime_error(map_bytes.error().message));
@@ -118,14 +146,14 @@ int BobCommand::run() const {
                              {"variant", variant_},
                              {"noise", noise_},
                              {"start", {r.start.x, r.start.y}},
-                             {"localisation", "perfect"},
-                             {"motion", "exact"}}},
+                             {"localisation", localisation_}}},
                            {"world",
                             {{"file", world_name},
+                             {"resolution_m", world.geometry().resolution_m()},
                              {"width_cells", r.width},
-                             {"height_cells", r.height},
-                             {"cell_m", world.geometry().resolution_m()}}},
-                           {"bob", row_json(r.row)}};
+                             {"height_cells", r.height}}},
+                           {"bob", row_json(r.row)},
+                           {"localisation", localisation_json(r.localisation)}};
   report["bob"]["stop_reason"] = stop_reason_name(r.stop_reason);
   report["bob"]["variant"] = variant_;
   const std::string json = encode_json(report);
@@ -142,6 +170,9 @@ int BobCommand::run() const {
         "empty-as-occupied {}, occupied-as-empty {}, success {:.2f}%\n",
         r.width, r.height, variant_, stop_reason_name(r.stop_reason), t.path_cells, t.turns,
         t.resensed, t.empty_as_occupied, t.occupied_as_empty, 100.0 * t.success_rate);
+    const BobLocalisationStats& l = r.localisation;
+    fmt::print("localisation: {}, {} fixes, {} repositionings, {} bumps, worst error {:.3f} m\n",
+               localisation_, l.fixes, l.repositionings, l.bumps, l.max_position_error_m);
     fmt::print("outputs: {}/monitor.png map.bob report.json\n", out_.string());
   }
   return kExitOk;

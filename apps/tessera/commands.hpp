@@ -89,10 +89,11 @@ class BobCommand : public Command {
   [[nodiscard]] int run() const;
 
  private:
-  WorldSource world_{std::nullopt, "labyrinth", std::nullopt};
+  WorldSource world_{std::nullopt, "labyrinth", std::nullopt, std::nullopt};
   double cell_m_ = 0.22;
   std::string variant_ = "trail";
   std::string noise_ = "on";
+  std::string localisation_ = "beacons";
   std::uint64_t seed_ = 1;
   std::optional<std::string> start_;
   std::filesystem::path out_ = "out/bob";

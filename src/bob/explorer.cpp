@@ -166,7 +166,16 @@ bool Explorer::first_step_to_nearest_explorable(Direction& dir) {
   return found;
 }
 
+// Bits of Explorer::undo_.
+constexpr std::uint8_t kUndoPossible = 1u;
+constexpr std::uint8_t kUndoTargetWasVisited = 2u;
+constexpr std::uint8_t kUndoStartWasReentered = 4u;
+
 void Explorer::commit_move(Direction dir) {
+  const GridCell target = step(position_, dir);
+  undo_ = static_cast<std::uint8_t>(
+      kUndoPossible | (map_.state(target) == CellState::kVisited ? kUndoTargetWasVisited : 0u) |
+      (start_reentered_ ? kUndoStartWasReentered : 0u));
   if (dir != heading_) {
     ++turns_;
     quarter_turns_ += static_cast<std::uint32_t>(bob::quarter_turns(heading_, dir));
@@ -205,6 +214,18 @@ Status Explorer::next_move(Direction& move) {
   }
   commit_move(d);
   move = d;
+  return Status::kOk;
+}
+
+Status Explorer::blocked() {
+  if (!started_ || (undo_ & kUndoPossible) == 0) return Status::kNotStarted;
+  if ((undo_ & kUndoTargetWasVisited) == 0) map_.set_state(position_, CellState::kOccupied);
+  start_reentered_ = (undo_ & kUndoStartWasReentered) != 0;
+  position_ = step(position_, opposite(heading_));
+  --moves_;
+  ++blocked_moves_;
+  undo_ = 0;
+  stop_reason_ = StopReason::kNone;
   return Status::kOk;
 }
 

@@ -2,27 +2,30 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "internal/bob_body.hpp"
 #include "tessera/bob/final_map.hpp"
 #include "tessera/bob/packed_map.hpp"
+#include "tessera/core/angle.hpp"
 
 namespace tessera {
 namespace {
 
 constexpr int kSafetyMovesPerCell = 64;
-constexpr std::size_t kMapBytes = static_cast<std::size_t>(kMaxBobCells);  // >= ceil(w/2) * h
-constexpr std::size_t kScratchBytes = bob::Explorer::scratch_bytes(kMaxBobCells, 1);
+constexpr int kMaxBumps = 3;  // tries of one move into a visited cell that the body cannot enter
+constexpr std::size_t kMapBytes = static_cast<std::size_t>(kMaxBobCells);    // >= ceil(w/2) * h
 constexpr std::size_t kFinalBytes = static_cast<std::size_t>(kMaxBobCells);  // >= ceil(w/8) * h
 
 /// The robot's memory: fixed buffers, as on the microcontroller.
 struct RobotBuffers {
   std::array<std::uint8_t, kMapBytes> map{};
-  std::array<std::uint8_t, kScratchBytes> scratch{};
   std::array<std::uint8_t, kFinalBytes> final_map{};
 };
 
@@ -34,8 +37,9 @@ std::string metres_text(double m) {
 
 bob::GridCell to_grid(Cell c) { return {c.x, c.y}; }
 
-/// See BobMissionOptions::start.
-std::optional<Cell> default_start(const World& world) {
+/// See BobMissionOptions::start: the candidates in order of preference.
+std::vector<Cell> start_candidates(const World& world) {
+  std::vector<Cell> out;
   const GridGeometry& g = world.geometry();
   const World::FreeComponents components = world.free_components();
   const std::vector<std::int32_t>& label = components.label;
@@ -46,35 +50,97 @@ std::optional<Cell> default_start(const World& world) {
   std::stable_sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
     return sizes[static_cast<std::size_t>(a)] > sizes[static_cast<std::size_t>(b)];
   });
-  for (const std::int32_t l : order) {
-    for (std::size_t i = 0; i < g.size(); ++i) {
-      if (label[i] != l) continue;
-      const Cell c = g.cell_of(i);
-      if (world.free(c + kNeighbors4[0])) return c;
+  // Preferably a cell in open space (all eight neighbours free), so that the first readings are
+  // not of a wall grazing the front cell; otherwise any cell with a free front neighbour.
+  const auto open_space = [&](Cell c) {
+    for (const Cell d : kNeighbors8) {
+      if (world.solid(c + d)) return false;
+    }
+    return true;
+  };
+  for (const bool need_open_space : {true, false}) {
+    for (const std::int32_t l : order) {
+      for (std::size_t i = 0; i < g.size(); ++i) {
+        if (label[i] != l) continue;
+        const Cell c = g.cell_of(i);
+        if (world.free(c + kNeighbors4[0]) && open_space(c) == need_open_space) {
+          out.push_back(c);
+        }
+      }
     }
   }
-  return std::nullopt;
+  return out;
 }
 
-/// `world` with one more solid cell all round and `free_cell` (which may lie in that ring) free.
-World with_free_cell(const World& world, Cell free_cell) {
+/// `world` with the fine cells whose centres lie in robot cell `cell` of `cells` free, padded by
+/// one robot cell of solid all round so that `cell` may lie just outside the grid.
+World with_free_cell(const World& world, const GridGeometry& cells, Cell cell) {
   const GridGeometry& g = world.geometry();
   const double r = g.resolution_m();
-  const GridGeometry padded(g.origin() - Vec2{r, r}, r, g.width() + 2, g.height() + 2);
+  const int pad = static_cast<int>(std::ceil(cells.resolution_m() / r)) + 1;
+  const GridGeometry padded(g.origin() - Vec2{pad * r, pad * r}, r, g.width() + 2 * pad,
+                            g.height() + 2 * pad);
   std::vector<std::uint8_t> solid(padded.size(), 1);
-  for (int y = -1; y <= g.height(); ++y) {
-    for (int x = -1; x <= g.width(); ++x) {
-      const Cell c{x, y};
-      const bool is_free = c == free_cell || world.free(c);
-      solid[padded.index_of({x + 1, y + 1})] = is_free ? 0 : 1;
-    }
+  for (std::size_t i = 0; i < padded.size(); ++i) {
+    const Cell p = padded.cell_of(i);
+    const bool in_cell = cells.cell_at_unchecked(padded.center_of(p)) == cell;
+    solid[i] = in_cell || world.free(p - Cell{pad, pad}) ? 0 : 1;
   }
   return World(padded, std::move(solid), world.name());
 }
 
+/// True when the robot's rectangular body (length along its heading) at pose T overlaps a solid
+/// cell of `world`; sampled on points no farther apart than half a world cell.
+bool body_hits(const World& world, const Pose2& T, double length_m, double width_m) {
+  const double spacing = 0.5 * world.geometry().resolution_m();
+  const int nx = static_cast<int>(std::ceil(length_m / spacing));
+  const int ny = static_cast<int>(std::ceil(width_m / spacing));
+  for (int i = 0; i <= nx; ++i) {
+    for (int j = 0; j <= ny; ++j) {
+      const Vec2 p_robot{(i / static_cast<double>(nx) - 0.5) * length_m,
+                         (j / static_cast<double>(ny) - 0.5) * width_m};
+      if (world.solid(world.geometry().cell_at_unchecked(T * p_robot))) return true;
+    }
+  }
+  return false;
+}
+
+/// How far the body can drive straight ahead from T, up to distance_m, before it touches a solid
+/// cell of `world` (checked every half world cell, at most 5 mm).
+double free_travel(const World& world, const Pose2& T, double distance_m, double length_m,
+                   double width_m) {
+  const double step_m = std::min(0.005, 0.5 * world.geometry().resolution_m());
+  const int n = static_cast<int>(std::ceil(distance_m / step_m));
+  for (int k = 0; k <= n; ++k) {
+    const double s_m = std::min(distance_m, k * step_m);
+    if (body_hits(world, T * Pose2{s_m, 0.0, 0.0}, length_m, width_m)) {
+      return std::max(0.0, s_m - step_m);
+    }
+  }
+  return distance_m;
+}
+
+BeaconOptions default_beacons(const GridGeometry& g) {
+  constexpr double kInsetM = 0.2;
+  constexpr double kCeilingM = 2.5;
+  const Vec2 lo = g.origin() + Vec2{kInsetM, kInsetM};
+  const Vec2 hi = g.origin() + Vec2{g.width() * g.resolution_m() - kInsetM,
+                                    g.height() * g.resolution_m() - kInsetM};
+  BeaconOptions b;
+  b.beacons = {{{lo.x, lo.y, kCeilingM}, {hi.x, lo.y, kCeilingM}, {lo.x, hi.y, kCeilingM}}};
+  return b;
+}
+
 void report(bob::Explorer& explorer, const StepSensing& s) {
+  // kOutOfBounds past the grid's edge: ignored.
   for (const CellDetection* d : {&s.left, &s.front, &s.right}) {
-    (void)explorer.sense(to_grid(d->cell), d->occupied);  // kOutOfBounds past the edge: ignored
+    if (d->seen) (void)explorer.sense(to_grid(d->cell), d->occupied);
+  }
+  for (const Cell c : s.also_occupied) {
+    if (explorer.map().contains(to_grid(c)) &&
+        explorer.map().state(to_grid(c)) != bob::CellState::kUnsensed) {
+      (void)explorer.sense(to_grid(c), true);
+    }
   }
 }
 
@@ -85,21 +151,33 @@ const char* bob_variant_name(BobVariant v) {
 }
 
 Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) {
-  const GridGeometry& g = world.geometry();
+  if (!(options.cell_m > 0.0)) return usage_error("cell_m: must be > 0");
   BobSensingOptions sensing;
-  sensing.layout.cell_m = g.resolution_m();
+  sensing.layout.cell_m = options.cell_m;
   sensing.layout.robot_length_m = options.robot_length_m;
   sensing.layout.robot_width_m = options.robot_width_m;
   sensing.samples_per_move = options.samples_per_move;
+  sensing.edge_tolerance_m = options.boundary_tolerance_m;
+  internal::BobBodyOptions body_options;
+  // Noise off: exact readings, motion and fixes (no encoder quantisation either).
+  body_options.perfect = options.perfect_localisation || !options.noise;
+  body_options.encoders = options.encoders;
+  body_options.slip_detection_m = options.reposition_threshold_m;
   if (!options.noise) {
+    body_options.slip_probability = 0.0;
     sensing.lateral = without_noise(sensing.lateral);
     sensing.front = without_noise(sensing.front);
+    body_options.encoders.scale_error_stddev = 0.0;
+    body_options.encoders.tick_noise_stddev = 0.0;
   }
   if (validate(sensing.layout)) {
-    return input_error("cell " + metres_text(g.resolution_m()) + " m does not fit the robot (" +
+    return input_error("cell " + metres_text(options.cell_m) + " m does not fit the robot (" +
                        metres_text(options.robot_length_m) + " x " +
                        metres_text(options.robot_width_m) + " m)");
   }
+  // The robot's grid and the ground truth of each of its cells.
+  const World truth = world.resampled(options.cell_m);
+  const GridGeometry& g = truth.geometry();
   const long long n_cells = static_cast<long long>(g.width()) * g.height();
   if (n_cells > kMaxBobCells) {
     return input_error("world is " + std::to_string(g.width()) + " x " +
@@ -108,25 +186,33 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
                        std::to_string(kMaxBobCells) + ")");
   }
   if (n_cells < 1) return input_error("world has no cells");
-
+  body_options.beacons = options.beacons ? *options.beacons : default_beacons(g);
+  if (!options.noise) {
+    body_options.beacons.range_noise_stddev_m = 0.0;
+    body_options.fix_stddev_m = 0.0;
+  }
   if (auto problem = validate(sensing)) return usage_error(*problem);
+  if (auto problem = validate(body_options.encoders)) return usage_error("encoders." + *problem);
+  if (auto problem = validate(body_options.beacons)) return usage_error("beacons." + *problem);
+  if (options.max_step_attempts < 1) return usage_error("max_step_attempts: must be >= 1");
 
-  Cell start{};
+  std::vector<Cell> candidates;
   if (options.start) {
-    start = *options.start;
+    const Cell start = *options.start;
     if (!g.contains(start)) return input_error("start " + to_string(start) + " is outside the map");
-    if (world.solid(start)) {
+    if (truth.solid(start)) {
       return input_error("start " + to_string(start) + " is inside an obstacle");
     }
+    if (truth.solid(start + kNeighbors4[0])) {
+      return input_error("start " + to_string(start) +
+                         ": the cell in front must be free (BOBMapping 3.4)");
+    }
+    candidates.push_back(start);
   } else {
-    const std::optional<Cell> s = default_start(world);
-    if (!s) return input_error("no free cell with a free cell in front (North) to start from");
-    start = *s;
-  }
-  const Cell front = start + kNeighbors4[0];
-  if (world.solid(front)) {
-    return input_error("start " + to_string(start) +
-                       ": the cell in front must be free (BOBMapping 3.4)");
+    candidates = start_candidates(truth);
+    if (candidates.empty()) {
+      return input_error("no free cell with a free cell in front (North) to start from");
+    }
   }
 
   const bob::Backtrack backtrack = options.variant == BobVariant::kTrail
@@ -134,58 +220,150 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
                                        : bob::Backtrack::kShortestKnownPath;
   auto buffers = std::make_unique<RobotBuffers>();
   bob::Explorer explorer;
-  if (const bob::Status s =
-          explorer.init(bob::ExplorerOptions{backtrack}, buffers->map.data(), buffers->map.size(),
-                        g.width(), g.height(), buffers->scratch.data(), buffers->scratch.size());
-      s != bob::Status::kOk) {
-    return runtime_error(std::string("explorer init: ") + bob::status_name(s));
+  Rng rng(options.seed);
+  // Placed by hand in a start cell facing North, the robot senses the three cells around it as if
+  // it had just driven in from behind. Section 3.4 needs the front cell free: when the sensors
+  // read it occupied (a wall just beyond it can mark it, errors falling on the safe side), a
+  // default start moves on to the next candidate; a given start is refused.
+  Cell start{};
+  bob::Status started = bob::Status::kFrontBlocked;
+  for (std::size_t k = 0; k < candidates.size() && started != bob::Status::kOk; ++k) {
+    start = candidates[k];
+    if (const bob::Status s = explorer.init(bob::ExplorerOptions{backtrack}, buffers->map.data(),
+                                            buffers->map.size(), g.width(), g.height());
+        s != bob::Status::kOk) {
+      return runtime_error(std::string("explorer init: ") + bob::status_name(s));
+    }
+    const Cell behind = start - kNeighbors4[0];
+    report(explorer, sense_cells_while_moving(with_free_cell(world, g, behind), g,
+                                              centred_pose(g, behind, 0), sensing, rng));
+    started = explorer.start(to_grid(start), bob::Direction::kNorth);
+  }
+  if (started != bob::Status::kOk) {
+    if (options.start) {
+      return input_error("start " + to_string(start) +
+                         ": the cell in front must be free (BOBMapping 3.4), sensed " +
+                         bob::status_name(started));
+    }
+    return input_error("no start cell whose front cell the sensors read free (BOBMapping 3.4)");
   }
 
-  Rng rng(options.seed);
   BobResult out;
   out.start = start;
   out.width = g.width();
   out.height = g.height();
   out.route.push_back(start);
 
-  // At rest: the three cells around the start, as if the robot had just driven in from behind.
-  {
-    const Cell behind = start - kNeighbors4[0];
-    const World approach = with_free_cell(world, behind);
-    report(explorer,
-           sense_cells_while_moving(approach, g, centred_pose(g, behind, 0), sensing, rng));
-  }
-  if (const bob::Status s = explorer.start(to_grid(start), bob::Direction::kNorth);
-      s != bob::Status::kOk) {
-    // Only kFrontBlocked is possible here: the sensors read the free front cell as occupied.
-    return input_error("start " + to_string(start) +
-                       ": the cell in front must be free (BOBMapping 3.4), sensed " +
-                       bob::status_name(s));
-  }
-
+  internal::BobBody body(body_options, centred_pose(g, start, 0), rng);
+  BobLocalisationStats& loc = out.localisation;
+  double fix_error_sum_m = 0.0;
+  int linear_since_fix = 0;
   const long long max_moves = kSafetyMovesPerCell * n_cells;
   Cell pos = start;
-  for (;;) {
+  bob::Direction heading = bob::Direction::kNorth;
+  // Backwards to the believed centre of `cell_m`: turn so that the back faces it, reverse.
+  const auto back_to = [&](Vec2 cell_m) {
+    const Vec2 here_m = body.belief().translation();
+    body.face(here_m + (here_m - cell_m), rng);
+    body.drive(-(cell_m - here_m).norm(), rng);
+  };
+  // A beacon fix; false when it disagrees with odometry by more than the threshold.
+  const auto take_fix = [&]() {
+    const Vec2 true_m = body.truth().translation();
+    loc.max_drift_m = std::max(loc.max_drift_m, (body.belief().translation() - true_m).norm());
+    const std::optional<double> disagreement_m = body.fix(rng);
+    if (!disagreement_m) {
+      ++loc.failed_fixes;
+      return true;
+    }
+    ++loc.fixes;
+    fix_error_sum_m += (body.belief().translation() - true_m).norm();
+    return *disagreement_m <= options.reposition_threshold_m;
+  };
+  Cell last_bumped{-1, -1};
+  int bumps_in_a_row = 0;
+  for (long long moves = 0;; ++moves) {
+    if (moves > max_moves) {
+      return runtime_error("the explorer did not stop within " + std::to_string(max_moves) +
+                           " moves");
+    }
     bob::Direction d{};
     const bob::Status s = explorer.next_move(d);
     if (s == bob::Status::kFinished) break;
     if (s != bob::Status::kOk) {
       return runtime_error(std::string("explorer: ") + bob::status_name(s));
     }
-    const int h = static_cast<int>(d);
-    const Cell next = pos + kNeighbors4[static_cast<std::size_t>(h)];
-    if (world.solid(next)) {
-      return runtime_error("the robot drove into an obstacle at " + to_string(next));
+    const Cell next = pos + kNeighbors4[static_cast<std::size_t>(static_cast<int>(d))];
+    const Vec2 from_m = g.center_of(pos);
+    const Vec2 to_m = g.center_of(next);
+    // BOBMapping 3.3: "after two linear movements or after the linear movement following a
+    // rotation" a fix; 3.4: on disagreement, back to the previous cell's centre and repeat.
+    bool after_turn = d != heading;
+    heading = d;
+    StepSensing step;
+    bool bumped = false;
+    for (int attempt = 1;; ++attempt) {
+      body.face(to_m, rng);
+      const Pose2 true_start = body.truth();
+      const Pose2 believed_start = body.belief();
+      const double command_m = (to_m - believed_start.translation()).norm();
+      // The motors stall where the body meets an obstacle (explorer.hpp, blocked()).
+      const double free_m =
+          free_travel(world, true_start, command_m, options.robot_length_m, options.robot_width_m);
+      // A cell the robot has stood in stays free (3.4), so the explorer asks for the same move
+      // again; after kMaxBumps tries the robot squeezes through (a collision, counted).
+      const bool squeeze = next == last_bumped && bumps_in_a_row >= kMaxBumps;
+      if (free_m < command_m && squeeze) ++loc.collisions;
+      if (free_m < command_m && !squeeze) {
+        body.drive(free_m, rng);
+        bumped = true;
+        break;
+      }
+      body.drive(command_m, rng);
+      // The uncertainty at the end of the move bounds it over the move.
+      const PoseUncertainty uncertainty{body.position_stddev_m(), body.heading_stddev_rad()};
+      step =
+          sense_cells_while_moving(world, g, true_start, believed_start, sensing, rng, uncertainty);
+      ++linear_since_fix;
+      if (options.perfect_localisation || (!after_turn && linear_since_fix < 2)) break;
+      linear_since_fix = 0;
+      if (take_fix()) break;
+      if (attempt == options.max_step_attempts) {
+        ++loc.unresolved_steps;
+        break;
+      }
+      ++loc.repositionings;
+      back_to(from_m);
+      after_turn = true;  // the repeated step ends with a fix
     }
-    report(explorer, sense_cells_while_moving(world, g, centred_pose(g, pos, h), sensing, rng));
+    if (bumped) {
+      // Back to where it came from, the cell it could not enter marked occupied; a fix there.
+      ++loc.bumps;
+      bumps_in_a_row = next == last_bumped ? bumps_in_a_row + 1 : 1;
+      last_bumped = next;
+      back_to(from_m);
+      if (const bob::Status b = explorer.blocked(); b != bob::Status::kOk) {
+        return runtime_error(std::string("explorer: ") + bob::status_name(b));
+      }
+      if (!options.perfect_localisation) {
+        linear_since_fix = 0;
+        (void)take_fix();
+      }
+      continue;
+    }
+    bumps_in_a_row = 0;
+    report(explorer, step);
+    const Pose2& t = body.truth();
+    const Pose2& b = body.belief();
+    loc.max_position_error_m =
+        std::max(loc.max_position_error_m, (b.translation() - t.translation()).norm());
+    loc.max_heading_error_rad =
+        std::max(loc.max_heading_error_rad, std::abs(normalize_angle(b.theta - t.theta)));
     pos = next;
     out.route.push_back(pos);
-    if (static_cast<long long>(out.route.size()) > max_moves) {
-      return runtime_error("the explorer did not stop within " + std::to_string(max_moves) +
-                           " moves");
-    }
   }
   out.stop_reason = explorer.stop_reason();
+  if (loc.fixes > 0) loc.mean_fix_error_m = fix_error_sum_m / loc.fixes;
 
   const std::size_t final_bytes = bob::FinalMap::bytes_needed(g.width(), g.height());
   if (const bob::Status s = explorer.write_final_map(buffers->final_map.data(), final_bytes);
@@ -210,17 +388,34 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
     out.sensed[i] = 1;
     ++row.sensed_cells;
     const bool occupied = st == bob::CellState::kOccupied;
-    if (occupied && world.free(c)) ++row.empty_as_occupied;
-    if (!occupied && world.solid(c)) ++row.occupied_as_empty;
+    // Scored with a band of boundary_tolerance_m either side of the cell's edges (see
+    // BobTableRow); the strict counts use the cell's own edges.
+    const Vec2 centre = g.center_of(c);
+    const Vec2 half{0.5 * options.cell_m, 0.5 * options.cell_m};
+    const Vec2 band{options.boundary_tolerance_m, options.boundary_tolerance_m};
+    if (occupied) {
+      if (truth.free(c)) ++row.empty_as_occupied_strict;
+      if (!world.any_solid_in(centre - half - band, centre + half + band)) {
+        ++row.empty_as_occupied;
+      }
+    } else {
+      if (truth.solid(c)) ++row.occupied_as_empty_strict;
+      if (world.any_solid_in(centre - half + band, centre + half - band)) {
+        ++row.occupied_as_empty;
+      }
+    }
   }
   row.resensed = static_cast<int>(explorer.resensed());
   row.path_cells = static_cast<int>(explorer.moves());
   row.turns = static_cast<int>(explorer.turns());
   row.success_rate =
       static_cast<double>(row.cells - row.empty_as_occupied - row.occupied_as_empty) / row.cells;
+  row.success_rate_strict =
+      static_cast<double>(row.cells - row.empty_as_occupied_strict - row.occupied_as_empty_strict) /
+      row.cells;
   row.path_share = static_cast<double>(row.path_cells) / row.cells;
   row.visited_share = static_cast<double>(row.visited_cells) / row.cells;
-  const std::vector<std::uint8_t> reachable = world.reachable_from(start);
+  const std::vector<std::uint8_t> reachable = truth.reachable_from(start);
   for (std::size_t i = 0; i < g.size(); ++i) {
     if (reachable[i] == 0) continue;
     ++row.free_reachable;

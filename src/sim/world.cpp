@@ -61,6 +61,40 @@ World World::resampled(double resolution_m) const {
   return World(coarse, std::move(solid), name_);
 }
 
+bool World::any_solid_in(Vec2 lo_m, Vec2 hi_m) const {
+  constexpr double kTol = 1e-9;  // touching a cell along an edge is no overlap
+  const double r = geometry_.resolution_m();
+  const Vec2 o = geometry_.origin();
+  const int x0 = static_cast<int>(std::floor((lo_m.x - o.x) / r + kTol));
+  const int y0 = static_cast<int>(std::floor((lo_m.y - o.y) / r + kTol));
+  const int x1 = static_cast<int>(std::ceil((hi_m.x - o.x) / r - kTol));  // exclusive
+  const int y1 = static_cast<int>(std::ceil((hi_m.y - o.y) / r - kTol));
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      if (solid({x, y})) return true;
+    }
+  }
+  return false;
+}
+
+World World::cropped(Vec2 lo_m, Vec2 hi_m) const {
+  constexpr double kTol = 1e-9;  // a rectangle edge on a cell boundary takes no extra cell
+  const double r = geometry_.resolution_m();
+  const Vec2 o = geometry_.origin();
+  const int x0 = static_cast<int>(std::floor((lo_m.x - o.x) / r + kTol));
+  const int y0 = static_cast<int>(std::floor((lo_m.y - o.y) / r + kTol));
+  const int x1 = static_cast<int>(std::ceil((hi_m.x - o.x) / r - kTol));  // exclusive
+  const int y1 = static_cast<int>(std::ceil((hi_m.y - o.y) / r - kTol));
+  const int w = std::max(0, x1 - x0);
+  const int h = std::max(0, y1 - y0);
+  const GridGeometry g(o + Vec2{x0 * r, y0 * r}, r, w, h);
+  std::vector<std::uint8_t> solid(g.size(), 1);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) solid[g.index_of({x, y})] = this->solid({x0 + x, y0 + y}) ? 1 : 0;
+  }
+  return World(g, std::move(solid), name_);
+}
+
 double World::cast_ray(Vec2 from_m, double angle_rad, double max_range_m) const {
   TESSERA_ASSERT(max_range_m >= 0.0);
   const Vec2 to_m = from_m + Vec2{std::cos(angle_rad), std::sin(angle_rad)} * max_range_m;

@@ -126,4 +126,22 @@ TEST(CliErrors, InfoOnAMissingFileIsAnInputError) {
 }
 
 }  // namespace
+TEST(CliErrors, MalformedCropIsAUsageError) {
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  const support::CliRun run =
+      run_cli("bob --builtin labyrinth --crop 1,2,3 --quiet --out " + out.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("--crop expects X0,Y0,X1,Y1"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliErrors, CropWithoutFreeSpaceIsAnInputError) {
+  TempDir dir;
+  support::write_bytes(dir / "m.pgm", pgm(4, 4, std::string(16, '\xfe')));
+  support::write_bytes(dir / "m.yaml", "image: m.pgm\nresolution: 0.5\norigin: [0, 0, 0]\n");
+  expect_input_error(dir, "--world " + (dir.path() / "m.yaml").string() + " --crop 5,5,6,6",
+                     "m.yaml", "no free cell of the world inside it");
+}
+
 }  // namespace tessera

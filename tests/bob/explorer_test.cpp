@@ -342,4 +342,47 @@ TEST(Explorer, StopsWhenEveryCellOfTheGridIsSensed) {
 }
 
 }  // namespace
+// Explorer::blocked(): the robot bumped into the cell it was sent to and came back. The cell
+// becomes occupied and the explorer chooses again from where the robot is.
+TEST(Explorer, ABlockedMoveMarksTheCellOccupiedAndRestoresThePosition) {
+  Knowledge k(TextGrid({
+                  "?????",
+                  "#...#",
+                  "#.R.#",
+                  "#####",
+              }),
+              Direction::kNorth);
+  Explorer& ex = k.explorer();
+  EXPECT_EQ(ex.blocked(), Status::kNotStarted);  // no move yet
+  EXPECT_EQ(next(ex), Direction::kNorth);
+  EXPECT_EQ(ex.position(), (GridCell{2, 2}));
+  EXPECT_EQ(ex.blocked(), Status::kOk);
+  EXPECT_EQ(ex.position(), (GridCell{2, 1}));
+  EXPECT_EQ(ex.map().state({2, 2}), CellState::kOccupied);
+  EXPECT_EQ(ex.moves(), 0u);
+  EXPECT_EQ(ex.blocked_moves(), 1u);
+  EXPECT_EQ(ex.blocked(), Status::kNotStarted);  // only the last move can be taken back
+  Direction d = Direction::kNorth;
+  const Status s = ex.next_move(d);
+  EXPECT_TRUE(s == Status::kFinished || d != Direction::kNorth);
+}
+
+// A cell the robot has stood in stays free (section 3.4); a bump only sends the robot back.
+TEST(Explorer, ABlockedMoveIntoAVisitedCellKeepsItVisited) {
+  Knowledge k(TextGrid({
+                  "##?##",
+                  "#.R.?",
+                  "#####",
+              }),
+              Direction::kEast);
+  Explorer& ex = k.explorer();
+  EXPECT_EQ(next(ex), Direction::kEast);  // to (3, 1)
+  const Direction back = next(ex);        // nothing left there: back towards the start
+  EXPECT_EQ(back, Direction::kWest);
+  EXPECT_EQ(ex.position(), (GridCell{2, 1}));
+  EXPECT_EQ(ex.blocked(), Status::kOk);
+  EXPECT_EQ(ex.position(), (GridCell{3, 1}));
+  EXPECT_EQ(ex.map().state({2, 1}), CellState::kVisited);
+}
+
 }  // namespace tessera::bob

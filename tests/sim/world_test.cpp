@@ -222,6 +222,30 @@ TEST(World, ResampledCoarseCellOverhangingTheEdgeIsSolid) {
   EXPECT_TRUE(coarse.solid({2, 0}));
 }
 
+TEST(World, CroppedKeepsTheCellsOfTheRectangle) {
+  // kRoom's pillar (6..7, 4) at 0.5 m: the rectangle x 2.6..4.1, y 1.9..2.5 snaps to cells
+  // x 5..8, y 3..4 (origin (2.5, 1.5)), so the pillar is at (1..2, 1) of the crop.
+  const World crop = kRoom.cropped({2.6, 1.9}, {4.1, 2.5});
+  ASSERT_EQ(crop.geometry().width(), 4);
+  ASSERT_EQ(crop.geometry().height(), 2);
+  EXPECT_EQ(crop.geometry().origin(), (Vec2{2.5, 1.5}));
+  EXPECT_DOUBLE_EQ(crop.geometry().resolution_m(), 0.5);
+  for (int y = 0; y < 2; ++y) {
+    for (int x = 0; x < 4; ++x) EXPECT_EQ(crop.solid({x, y}), kRoom.solid({x + 5, y + 3}));
+  }
+  EXPECT_TRUE(crop.solid({1, 1}));
+  EXPECT_TRUE(crop.free({0, 0}));
+}
+
+TEST(World, CroppedBeyondTheGridIsSolidAndAnEmptyRectangleIsEmpty) {
+  const World crop = kRoom.cropped({4.0, 3.0}, {6.0, 5.0});  // cells 8..11 x 6..9
+  ASSERT_EQ(crop.geometry().width(), 4);
+  ASSERT_EQ(crop.geometry().height(), 4);
+  EXPECT_TRUE(crop.free({0, 0}));   // (8, 6) is inside the room
+  EXPECT_TRUE(crop.solid({2, 0}));  // (10, 6) is past the grid
+  EXPECT_EQ(kRoom.cropped({3.0, 3.0}, {3.0, 4.0}).geometry().size(), 0u);
+}
+
 TEST(World, ResampledToAFinerGridCopiesEachCell) {
   const World fine = kRoom.resampled(0.25);
   ASSERT_EQ(fine.geometry().width(), 20);

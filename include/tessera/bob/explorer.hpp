@@ -118,6 +118,17 @@ class Explorer {
   /// Cells of the grid not sensed yet.
   [[nodiscard]] int unsensed_cells() const { return unsensed_; }
 
+  /// The move just returned by next_move() could not be made: the robot met an obstacle on the
+  /// way (a bump or a stalled motor) and drove back to the cell it left. That cell becomes the
+  /// position again and the cell it tried to enter is marked occupied -- unless the robot had
+  /// stood in it before (section 3.4: a visited cell never becomes occupied), when only the
+  /// position is restored. Not in the paper, whose robot has no bumper: without it a robot that
+  /// misread a cell drives into it. kNotStarted when there is no move to take back (before the
+  /// first move, or twice in a row). The move is not counted in moves().
+  [[nodiscard]] Status blocked();
+  /// Moves taken back with blocked().
+  [[nodiscard]] std::uint32_t blocked_moves() const { return blocked_moves_; }
+
   /// Writes the final 1-bit map (FinalMap layout) into `buffer`
   /// (FinalMap::bytes_needed bytes). kBufferTooSmall, kNotStarted before init().
   [[nodiscard]] Status write_final_map(std::uint8_t* buffer, std::size_t buffer_bytes) const;
@@ -152,6 +163,9 @@ class Explorer {
   std::uint32_t quarter_turns_ = 0;
   std::uint32_t resensed_ = 0;
   std::uint32_t discarded_ = 0;
+  std::uint32_t blocked_moves_ = 0;
+  // What blocked() needs to take the last move back (kUndo* bits).
+  std::uint8_t undo_ = 0;
 };
 
 }  // namespace tessera::bob

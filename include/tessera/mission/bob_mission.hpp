@@ -1,16 +1,25 @@
 #pragma once
 // A simulated BOBMapping run (BOBMapping sections 3.1-3.4, Table 1): the freestanding explorer of
-// bob/ driven by a simulated robot on a World whose cells are the robot's cells. The loop
-// `tessera bob` runs, kept in the library so the app stays thin.
+// bob/ driven by a simulated robot on a ground-truth World of any resolution, under a grid of
+// robot-sized cells laid over it from the world's origin. The loop `tessera bob` runs, kept in the
+// library so the app stays thin.
 //
-// Scope of this simulation (what it models and what it does not):
-//  - Motion is exact: every move ends centred in the next cell, turns are exact 90-degree turns.
-//  - Localisation is perfect: the believed pose is the true pose (no encoders, no beacons yet).
-//  - Sensing is the five-IR snowplow of Figure 3 (sim::sense_cells_while_moving), sampled while
-//    the robot moves, with or without the IR noise model.
-//  - At the start pose the robot senses the three cells around its start cell (left, front,
-//    right), simulated as the move into the start cell from the cell behind it (that cell is
-//    taken as free for this one sensing; nothing else changes).
+// What it models:
+//  - Ground truth per robot cell: occupied when any solid cell of the world overlaps it
+//    (World::resampled), the paper's "any detection inside a cell marks it occupied". Obstacles
+//    straddle robot cells wherever the world is finer than the robot's grid.
+//  - Sensing: the five-IR snowplow of Figure 3 (sim::sense_cells_while_moving), rays cast in the
+//    fine world from the true pose, readings placed in the robot's grid from the believed pose.
+//  - Localisation (3.3), unless `perfect_localisation`: the robot turns in place to face the
+//    centre of the next cell and drives to it; wheel encoders dead-reckon while it moves (their
+//    scale errors and slip make the belief drift from the truth); an ultrasonic beacon fix is
+//    taken after two linear moves or after the linear move that follows a turn, and replaces the
+//    believed position. When the fix disagrees with odometry by more than
+//    `reposition_threshold_m`, the robot drives back to the centre of the previous cell and
+//    repeats the step, sensing again; the readings of the rejected step are discarded.
+//  - At the start the robot is placed by hand (belief = truth) centred in its cell, facing North,
+//    and senses the three cells around it as if it had just driven in from the cell behind (that
+//    cell is taken as free for this one sensing; nothing else changes).
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -20,6 +29,8 @@
 #include "tessera/bob/explorer.hpp"
 #include "tessera/core/cell.hpp"
 #include "tessera/core/result.hpp"
+#include "tessera/sensors/beacon_trilateration.hpp"
+#include "tessera/sensors/wheel_encoders.hpp"
 #include "tessera/sim/bob_sensing.hpp"
 #include "tessera/sim/world.hpp"
 
@@ -39,10 +50,26 @@ enum class BobVariant {
 
 struct BobMissionOptions {
   BobVariant variant = BobVariant::kTrail;
-  bool noise = true;  // IR noise (sensors/ir_sensor.hpp) on or off
+  double cell_m = 0.22;  // side of the robot's cells (BOBMapping 4.1)
+  /// Noise of every sensor: IR (sensors/ir_sensor.hpp), encoder slip and scale errors, beacon
+  /// ranges. Off: exact readings, so motion and localisation are exact too.
+  bool noise = true;
   std::uint64_t seed = 1;
-  /// Start cell, facing North. Default: in the largest 4-connected free area, the first cell in
-  /// row-major order (lowest row, then lowest column) whose North neighbour is free.
+  /// Exact motion and localisation whatever `noise` says (the robot knows its true pose).
+  bool perfect_localisation = false;
+  WheelEncoderOptions encoders;
+  /// Default: three emitters 2.5 m up over three corners of the world (0.2 m in from its edges).
+  std::optional<BeaconOptions> beacons;
+  /// BOBMapping 3.4 "if it exceeds a threshold, a repositioning is carried out" (the paper gives
+  /// no figure): above the 3.5 cm mean error of a fix, so that a good fix seldom triggers it.
+  double reposition_threshold_m = 0.05;
+  int max_step_attempts = 4;  // a step is repeated at most this many times in all
+  /// Table 1 scoring band (BobTableRow): an obstacle this close to a cell edge may be mapped in
+  /// either cell without counting as an error. Below the beacons' 3.5 cm mean error.
+  double boundary_tolerance_m = 0.03;
+  /// Start cell of the robot's grid, facing North. Default: in the largest 4-connected free area,
+  /// the first cell in row-major order (lowest row, then lowest column) whose eight neighbours
+  /// are free, or failing that whose North neighbour is free.
   std::optional<Cell> start;
   /// Robot footprint (BOBMapping 4.1); the cell side is the world's resolution.
   double robot_length_m = 0.16;
@@ -52,12 +79,18 @@ struct BobMissionOptions {
 
 /// BOBMapping Table 1 for one configuration, plus the comparison with the SmartDFS bound.
 struct BobTableRow {
-  int cells = 0;                   // cells in the configuration: every cell of the grid (W x H)
-  int sensed_cells = 0;            // cells sensed at least once
-  int resensed = 0;                // readings that changed an already sensed cell
-  int empty_as_occupied = 0;       // over sensed cells: map occupied where the world is free
-  int occupied_as_empty = 0;       // over sensed cells: map free where the world is solid
-  double success_rate = 0.0;       // (cells - both errors) / cells, as the paper computes it
+  int cells = 0;         // cells in the configuration: every cell of the grid (W x H)
+  int sensed_cells = 0;  // cells sensed at least once
+  int resensed = 0;      // readings that changed an already sensed cell
+  // Errors over sensed cells, scored with a don't-care band of boundary_tolerance_m either side
+  // of each cell edge (the robot knows its grid only to its localisation error):
+  int empty_as_occupied = 0;  // map occupied, but nothing solid even in the cell grown by the band
+  int occupied_as_empty = 0;  // map free, but something solid in the cell shrunk by the band
+  double success_rate = 0.0;  // (cells - both errors) / cells, as the paper computes it
+  // The same against the cell's own edges (any solid overlap makes a cell occupied):
+  int empty_as_occupied_strict = 0;
+  int occupied_as_empty_strict = 0;
+  double success_rate_strict = 0.0;
   int path_cells = 0;              // one-cell moves ("length path")
   int turns = 0;                   // heading changes, each counts one whatever its angle
   int visited_cells = 0;           // distinct cells stood in
@@ -69,26 +102,41 @@ struct BobTableRow {
   double path_per_smartdfs = 0.0;  // path_cells / (C + E/2 - 3), Icking et al. 2005
 };
 
+/// How the localisation of 3.3 went.
+struct BobLocalisationStats {
+  int fixes = 0;             // beacon fixes taken
+  int failed_fixes = 0;      // trilateration gave no position (belief kept)
+  int repositionings = 0;    // steps repeated because the fix disagreed with odometry
+  int unresolved_steps = 0;  // steps still disagreeing after max_step_attempts (kept)
+  int bumps = 0;             // moves stopped by an obstacle and taken back (bob::Explorer::blocked)
+  int collisions = 0;        // moves into a visited cell made although the body touched an obstacle
+  double mean_fix_error_m = 0.0;       // |fix - true position|
+  double max_drift_m = 0.0;            // largest |odometry position - true position| before a fix
+  double max_position_error_m = 0.0;   // largest |believed - true position| at the end of a step
+  double max_heading_error_rad = 0.0;  // largest |believed - true heading| at the end of a step
+};
+
 struct BobResult {
   std::vector<Cell> route;  // cells the robot stood in, start first, one per move
-  int width = 0;            // grid of the run (the world's)
+  int width = 0;            // the robot's grid
   int height = 0;
   std::vector<std::uint8_t> final_map;  // bob::FinalMap layout: 1 = occupied or unsensed
   std::vector<std::uint8_t> sensed;     // one byte per cell, row-major: 1 = sensed
   BobTableRow row;
+  BobLocalisationStats localisation;
   bob::StopReason stop_reason = bob::StopReason::kNone;
   Cell start;
 };
 
 /// Runs the explorer until it stops. Deterministic for a given seed.
 ///
-/// Errors (kInput): "world is W x H = N cells, more than the robot's buffers hold (4096)";
+/// Errors (kInput): "world is W x H = N cells, more than the robot's buffers hold (4096)" (cells of
+/// the robot's grid);
 /// "cell 0.1 m does not fit the robot (0.16 x 0.15 m)"; "start (x, y) is outside the map" /
 /// "is inside an obstacle"; "start (x, y): the cell in front must be free (BOBMapping 3.4)"; no
 /// start cell with a free North neighbour. kRuntime: the robot drove into an obstacle or the
-/// explorer did not stop within 64 moves per cell (both would be bugs).
+/// explorer did not stop within 64 moves per cell (a bug).
 /// Cost: O(moves) with kTrail, O(moves * cells) with kMapAware.
-[[nodiscard]] Result<BobResult> run_bob(const World& world_in_cells,
-                                        const BobMissionOptions& options);
+[[nodiscard]] Result<BobResult> run_bob(const World& world, const BobMissionOptions& options);
 
 }  // namespace tessera

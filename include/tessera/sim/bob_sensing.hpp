@@ -2,6 +2,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tessera/core/cell.hpp"
 #include "tessera/core/pose2.hpp"
@@ -21,15 +22,16 @@ struct BobSensingOptions {
   IrSensorOptions lateral = lateral_ir_options();
   IrSensorOptions front = front_ir_options();
   int samples_per_move = 12;  // readings per sensor, evenly spread over the move (cell midpoints)
-  /// A reading d counts for a target cell when the stretch [d, d + near_sigmas * sigma(d)] along
-  /// the beam reaches the cell ("the obstacle may be farther than read": the ground between the
-  /// robot and the cell is the free cell it drives into) ...
-  double near_sigmas = 3.5;
-  /// ... and d lies at least far_sigmas * sigma(d) before the beam leaves the cell (a reflector
-  /// just beyond the cell must not mark it). Both exceed the 3-sigma clip of the IR noise, so on
-  /// a grid-aligned world the result is exact even with noise; the price is that an obstacle
-  /// inside a cell within far_sigmas * sigma of its far side is seen only by other beams.
-  double far_sigmas = 3.5;
+  /// A reading d says the reflector lies within [d - k sigma(d), d + k sigma(d)] along the beam
+  /// (the IR noise is clipped at 3 sigma), widened by the pose uncertainty (PoseUncertainty).
+  /// It marks a target cell occupied when that region, shrunk by edge_tolerance_m, meets the
+  /// cell; errors thus fall on the safe side. With noise off and an exact pose the rule is exact.
+  double near_sigmas = 3.0;
+  double far_sigmas = 3.0;
+  /// An obstacle closer than this to a cell edge may be mapped in either cell (the robot's
+  /// clearance in its cell: it fits beside such an obstacle). 0: every detection that may lie in
+  /// a cell marks it.
+  double edge_tolerance_m = 0.0;
 };
 
 /// Empty when usable; otherwise names the field and the rule it breaks.
@@ -40,14 +42,30 @@ struct BobSensingOptions {
 struct CellDetection {
   Cell cell;
   bool occupied = false;
+  /// False when nothing was read inside the cell and either no beam crossed it or a beam that
+  /// would have was stopped in front of it (an obstacle that only grazes the cell the robot
+  /// drives into can hide part of the next one). Such a cell is not reported as free.
+  bool seen = false;
 };
 
 /// The three cells a step senses, in the paper's names for a move C1 -> C2 (Figure 3).
 struct StepSensing {
-  CellDetection left;         // B2, swept by i
-  CellDetection front;        // C3, swept by k, l and m
-  CellDetection right;        // D2, swept by j
+  CellDetection left;   // B2, swept by i
+  CellDetection front;  // C3, swept by k, l and m
+  CellDetection right;  // D2, swept by j
+  /// Other cells in which a reading placed its reflector (B1, C2's far neighbours, the strip of
+  /// B2 and D2 the previous step did not sweep...): detections only, never "free", since the
+  /// beams do not cover them.
+  std::vector<Cell> also_occupied;
   int in_range_readings = 0;  // readings that gave a distance, of 5 * samples_per_move
+};
+
+/// How well the robot knows its believed pose (standard deviations). Readings are placed from the
+/// believed pose, so a reflector may lie 3 (position + distance * heading) from where it is
+/// placed: a cell within that of a placed reading is marked occupied too.
+struct PoseUncertainty {
+  double position_stddev_m = 0.0;
+  double heading_stddev_rad = 0.0;
 };
 
 /// The robot moves one cell (cells.resolution_m()) straight ahead, and its five sensors are read
@@ -67,7 +85,8 @@ struct StepSensing {
 [[nodiscard]] StepSensing sense_cells_while_moving(const World& world, const GridGeometry& cells,
                                                    const Pose2& T_world_robot_start,
                                                    const Pose2& T_map_robot_start,
-                                                   const BobSensingOptions& o, Rng& rng);
+                                                   const BobSensingOptions& o, Rng& rng,
+                                                   const PoseUncertainty& uncertainty = {});
 
 /// The same with perfect localisation: the believed start is the true start.
 [[nodiscard]] inline StepSensing sense_cells_while_moving(const World& world,

@@ -38,6 +38,16 @@ class World {
   /// side). Precondition: resolution_m > 0.
   [[nodiscard]] World resampled(double resolution_m) const;
 
+  /// True when a solid cell overlaps the rectangle [lo_m, hi_m] with positive area (cells outside
+  /// the grid count as solid). Cost: O(cells the rectangle overlaps).
+  [[nodiscard]] bool any_solid_in(Vec2 lo_m, Vec2 hi_m) const;
+
+  /// The part of this world inside the rectangle [lo_m, hi_m], at the same resolution: the fine
+  /// cells the rectangle overlaps, so the new origin is lo_m snapped down to a cell corner. Cells
+  /// of the rectangle outside this grid are solid. Empty world when the rectangle is empty.
+  /// Used to cut a room out of a floor plan (tessera --crop). Cost: O(cells of the result).
+  [[nodiscard]] World cropped(Vec2 lo_m, Vec2 hi_m) const;
+
   /// Distance from `from_m` along `angle_rad` to the first solid cell boundary, exact on the grid
   /// (Amanatides & Woo traversal); max_range_m when nothing is hit within it. 0 when from_m lies in
   /// a solid cell or outside the grid. A ray through an exact cell corner takes the x step first

@@ -61,16 +61,29 @@ World World::resampled(double resolution_m) const {
   return World(coarse, std::move(solid), name_);
 }
 
+namespace {
+
+// The cells [x0, x1) x [y0, y1) of `g` that the rectangle [lo_m, hi_m] overlaps with positive
+// area (an edge on a cell boundary takes no extra cell).
+struct CellRange {
+  int x0, y0, x1, y1;
+};
+CellRange cells_overlapping(const GridGeometry& g, Vec2 lo_m, Vec2 hi_m) {
+  constexpr double kTol = 1e-9;
+  const double r = g.resolution_m();
+  const Vec2 o = g.origin();
+  return {static_cast<int>(std::floor((lo_m.x - o.x) / r + kTol)),
+          static_cast<int>(std::floor((lo_m.y - o.y) / r + kTol)),
+          static_cast<int>(std::ceil((hi_m.x - o.x) / r - kTol)),
+          static_cast<int>(std::ceil((hi_m.y - o.y) / r - kTol))};
+}
+
+}  // namespace
+
 bool World::any_solid_in(Vec2 lo_m, Vec2 hi_m) const {
-  constexpr double kTol = 1e-9;  // touching a cell along an edge is no overlap
-  const double r = geometry_.resolution_m();
-  const Vec2 o = geometry_.origin();
-  const int x0 = static_cast<int>(std::floor((lo_m.x - o.x) / r + kTol));
-  const int y0 = static_cast<int>(std::floor((lo_m.y - o.y) / r + kTol));
-  const int x1 = static_cast<int>(std::ceil((hi_m.x - o.x) / r - kTol));  // exclusive
-  const int y1 = static_cast<int>(std::ceil((hi_m.y - o.y) / r - kTol));
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
+  const CellRange c = cells_overlapping(geometry_, lo_m, hi_m);
+  for (int y = c.y0; y < c.y1; ++y) {
+    for (int x = c.x0; x < c.x1; ++x) {
       if (solid({x, y})) return true;
     }
   }
@@ -78,19 +91,16 @@ bool World::any_solid_in(Vec2 lo_m, Vec2 hi_m) const {
 }
 
 World World::cropped(Vec2 lo_m, Vec2 hi_m) const {
-  constexpr double kTol = 1e-9;  // a rectangle edge on a cell boundary takes no extra cell
+  const CellRange c = cells_overlapping(geometry_, lo_m, hi_m);
   const double r = geometry_.resolution_m();
-  const Vec2 o = geometry_.origin();
-  const int x0 = static_cast<int>(std::floor((lo_m.x - o.x) / r + kTol));
-  const int y0 = static_cast<int>(std::floor((lo_m.y - o.y) / r + kTol));
-  const int x1 = static_cast<int>(std::ceil((hi_m.x - o.x) / r - kTol));  // exclusive
-  const int y1 = static_cast<int>(std::ceil((hi_m.y - o.y) / r - kTol));
-  const int w = std::max(0, x1 - x0);
-  const int h = std::max(0, y1 - y0);
-  const GridGeometry g(o + Vec2{x0 * r, y0 * r}, r, w, h);
+  const int w = std::max(0, c.x1 - c.x0);
+  const int h = std::max(0, c.y1 - c.y0);
+  const GridGeometry g(geometry_.origin() + Vec2{c.x0 * r, c.y0 * r}, r, w, h);
   std::vector<std::uint8_t> solid(g.size(), 1);
   for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) solid[g.index_of({x, y})] = this->solid({x0 + x, y0 + y}) ? 1 : 0;
+    for (int x = 0; x < w; ++x) {
+      solid[g.index_of({x, y})] = this->solid({c.x0 + x, c.y0 + y}) ? 1 : 0;
+    }
   }
   return World(g, std::move(solid), name_);
 }

@@ -17,6 +17,10 @@
 //    believed position. When the fix disagrees with odometry by more than
 //    `reposition_threshold_m`, the robot drives back to the centre of the previous cell and
 //    repeats the step, sensing again; the readings of the rejected step are discarded.
+//  - Bumps: when the true body would touch a solid cell on the way, the move stops there, the
+//    robot backs to the cell it left and bob::Explorer::blocked() marks the target occupied. A
+//    cell it has stood in stays free, so after three bumps into one the robot squeezes through
+//    (counted in BobLocalisationStats::collisions).
 //  - At the start the robot is placed by hand (belief = truth) centred in its cell, facing North,
 //    and senses the three cells around it as if it had just driven in from the cell behind (that
 //    cell is taken as free for this one sensing; nothing else changes).

@@ -78,7 +78,8 @@ struct PoseUncertainty {
 /// sweep B2 and D2 between x = L/2 and L/2 + c from C1's centre, so the last c/2 - L/2 (3 cm) of
 /// B2 and D2 is not swept in this step; k and m see the near corners of C3 only in the previous
 /// straight step, and l covers the triangle between them on its centre line only (beams are rays).
-/// On a world whose solid cells are whole cells of `cells` every case is sensed exactly.
+/// On a world whose solid cells are whole cells of `cells`, with exact readings and an exact pose,
+/// every case is sensed exactly; with noise a wall on a cell face may also mark the cell before it.
 ///
 /// Cost: 5 * samples_per_move ray casts. Draws one Gaussian per reading when noise is on.
 /// Precondition: validate(o) is empty and cells.resolution_m() == o.layout.cell_m.

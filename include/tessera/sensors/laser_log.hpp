@@ -1,0 +1,33 @@
+#pragma once
+#include <vector>
+
+#include "tessera/core/pose2.hpp"
+#include "tessera/sensors/range_scan.hpp"
+
+namespace tessera {
+
+/// One laser scan as a log records it: the stamp, the odometry pose at scan time and the scan in
+/// the sensor frame. `laser_in_robot` is where the sensor sits on the robot (identity when the log
+/// does not say).
+struct StampedScan {
+  double t_s = 0.0;
+  Pose2 odometry;
+  Pose2 laser_in_robot;
+  RangeScan scan;
+};
+
+/// An odometry pose with its stamp (CARMEN ODOM).
+struct OdometryReading {
+  double t_s = 0.0;
+  Pose2 pose;
+};
+
+/// A 2D laser log in file order (the order the robot recorded it; stamps need not increase).
+struct LaserLog {
+  std::vector<StampedScan> scans;
+  std::vector<OdometryReading> odometry;
+  /// How many scans have a stamp smaller than the scan before them.
+  int backward_stamps = 0;
+};
+
+}  // namespace tessera

@@ -105,7 +105,9 @@ Result<OptimizeSummary> optimize(PoseGraph& graph, const OptimizeOptions& option
   }
   out.initial_cost = summary.initial_cost;
   out.final_cost = summary.final_cost;
-  out.iterations = static_cast<int>(summary.iterations.size());
+  // The steps Ceres took, as max_num_iterations counts them (summary.iterations also holds the
+  // initial evaluation, iteration 0).
+  out.iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
   out.termination = summary.message;
   out.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

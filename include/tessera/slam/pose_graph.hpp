@@ -37,7 +37,7 @@ struct OptimizeOptions {
 struct OptimizeSummary {
   double initial_cost = 0.0;
   double final_cost = 0.0;
-  int iterations = 0;
+  int iterations = 0;  // solver steps taken, at most max_iterations
   double time_s = 0.0;
   bool converged = false;
   std::string termination;  // Ceres' one-line report

@@ -1,0 +1,64 @@
+#pragma once
+// The relation metric of Kummerle et al. 2009 ("On measuring the accuracy of SLAM algorithms",
+// Autonomous Robots 27(4):387-407): a SLAM trajectory is scored on the relative motions between
+// pairs of stamps that a person has checked, so no alignment of frames is needed. Definition as
+// ../shared/data/laser/README.md states it:
+//   E = (x(t1)^-1 * x(t2)) * relation^-1,  t = |translation of E| (m),  r = |angle of E|,
+// with x(t) the estimated trajectory interpolated linearly in translation and along the shortest
+// arc in rotation; mean and sample standard deviation (n - 1) of t, t^2, r and r^2.
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "tessera/core/result.hpp"
+#include "tessera/core/stamped_pose2.hpp"
+#include "tessera/eval/relation.hpp"
+
+namespace tessera {
+
+/// The error of one relation that was scored.
+struct RelationError {
+  double t1_s = 0.0;  // the relation's stamps
+  double t2_s = 0.0;
+  double trans_m = 0.0;  // |translation of E|
+  double rot_rad = 0.0;  // |angle of E|, in [0, pi]
+};
+
+/// The metric over the relations that fall inside the trajectory. Rotations are in radians here;
+/// Kummerle et al. and the CLI report degrees (rad_to_deg of each field; the squared fields scale
+/// by (180/pi)^2). A standard deviation over a single relation is 0.
+struct RelationMetric {
+  std::size_t count = 0;    // relations scored: both stamps inside the trajectory's time span
+  std::size_t skipped = 0;  // relations with a stamp outside it
+  double trans_mean_m = 0.0;
+  double trans_std_m = 0.0;
+  double trans_sq_mean_m2 = 0.0;
+  double trans_sq_std_m2 = 0.0;
+  double rot_mean_rad = 0.0;
+  double rot_std_rad = 0.0;
+  double rot_sq_mean_rad2 = 0.0;
+  double rot_sq_std_rad2 = 0.0;
+  std::size_t poses = 0;            // poses of the trajectory
+  double trajectory_begin_s = 0.0;  // its time span, time offset included
+  double trajectory_end_s = 0.0;
+  std::vector<RelationError> errors;  // one per relation scored, in the relations' order
+};
+
+/// The pose of a trajectory at t_s: linear in translation between the poses on either side, along
+/// the shortest arc in heading; a pose stamped exactly t_s is returned as is. nullopt when t_s is
+/// outside [first stamp, last stamp]. Precondition: `sorted` is sorted by t_s (equal stamps
+/// allowed). Cost: O(log n).
+[[nodiscard]] std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted,
+                                                    double t_s);
+
+/// Scores `trajectory` (any order: stamps may go backwards, as in real CARMEN logs; a sorted copy
+/// is used) against `relations`. `time_offset_s` is added to every trajectory stamp to bring it
+/// into the relations' time base (Intel: logger-relative stamps + 976052857.337284 s). Relations
+/// with a stamp outside the trajectory's span are skipped and counted. Input error when the
+/// trajectory or the relations are empty, or when no relation falls inside the span.
+/// Precondition: time_offset_s is finite. Cost: O((n + m) log n) for n poses and m relations.
+[[nodiscard]] Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajectory,
+                                                     const std::vector<Relation>& relations,
+                                                     double time_offset_s = 0.0);
+
+}  // namespace tessera

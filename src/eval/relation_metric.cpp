@@ -1,0 +1,114 @@
+#include "tessera/eval/relation_metric.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <string>
+
+namespace tessera {
+namespace {
+
+struct MeanStd {
+  double mean = 0.0;
+  double std = 0.0;  // sample standard deviation (divides by n - 1); 0 for a single value
+};
+
+/// Two passes (mean, then squared deviations): no cancellation for values far from zero.
+MeanStd mean_and_sample_std(const std::vector<double>& values) {
+  TESSERA_ASSERT(!values.empty());
+  const double n = static_cast<double>(values.size());
+  MeanStd r;
+  for (double v : values) r.mean += v;
+  r.mean /= n;
+  if (values.size() < 2) return r;
+  double sum_sq = 0.0;
+  for (double v : values) sum_sq += (v - r.mean) * (v - r.mean);
+  r.std = std::sqrt(sum_sq / (n - 1.0));
+  return r;
+}
+
+std::string seconds(double t_s) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.6f", t_s);
+  return text;
+}
+
+}  // namespace
+
+std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted, double t_s) {
+  if (sorted.empty() || !(t_s >= sorted.front().t_s) || !(t_s <= sorted.back().t_s)) {
+    return std::nullopt;
+  }
+  // First pose stamped at or after t_s; it exists because t_s <= the last stamp.
+  const auto hi = std::lower_bound(sorted.begin(), sorted.end(), t_s,
+                                   [](const StampedPose2& p, double t) { return p.t_s < t; });
+  if (hi->t_s == t_s) return hi->pose;
+  // Here sorted.front().t_s < t_s < hi->t_s, so hi has a predecessor and the interval is not empty.
+  const auto lo = std::prev(hi);
+  const double alpha = (t_s - lo->t_s) / (hi->t_s - lo->t_s);
+  const Pose2& a = lo->pose;
+  const Pose2& b = hi->pose;
+  return Pose2{a.x + alpha * (b.x - a.x), a.y + alpha * (b.y - a.y),
+               normalize_angle(a.theta + alpha * normalize_angle(b.theta - a.theta))};
+}
+
+Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajectory,
+                                       const std::vector<Relation>& relations,
+                                       double time_offset_s) {
+  TESSERA_ASSERT(std::isfinite(time_offset_s));
+  if (trajectory.empty()) return input_error("the trajectory has no poses");
+  if (relations.empty()) return input_error("there are no relations to score");
+
+  std::vector<StampedPose2> sorted = trajectory;
+  for (StampedPose2& p : sorted) p.t_s += time_offset_s;
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const StampedPose2& a, const StampedPose2& b) { return a.t_s < b.t_s; });
+
+  RelationMetric m;
+  m.poses = sorted.size();
+  m.trajectory_begin_s = sorted.front().t_s;
+  m.trajectory_end_s = sorted.back().t_s;
+  std::vector<double> trans_m, trans_sq_m2, rot_rad, rot_sq_rad2;
+  for (const Relation& rel : relations) {
+    const std::optional<Pose2> x1 = interpolate_pose(sorted, rel.t1_s);
+    const std::optional<Pose2> x2 = interpolate_pose(sorted, rel.t2_s);
+    if (!x1 || !x2) {
+      ++m.skipped;
+      continue;
+    }
+    // Kummerle et al. 2009: E = (x(t1)^-1 * x(t2)) * relation^-1.
+    const Pose2 E = between(*x1, *x2) * rel.motion.inverse();
+    const RelationError e{rel.t1_s, rel.t2_s, std::hypot(E.x, E.y), std::abs(E.theta)};
+    m.errors.push_back(e);
+    trans_m.push_back(e.trans_m);
+    trans_sq_m2.push_back(e.trans_m * e.trans_m);
+    rot_rad.push_back(e.rot_rad);
+    rot_sq_rad2.push_back(e.rot_rad * e.rot_rad);
+  }
+  if (m.errors.empty()) {
+    double first_s = relations.front().t1_s, last_s = first_s;
+    for (const Relation& rel : relations) {
+      first_s = std::min({first_s, rel.t1_s, rel.t2_s});
+      last_s = std::max({last_s, rel.t1_s, rel.t2_s});
+    }
+    return input_error("no relation falls within the trajectory's time span [" +
+                       seconds(m.trajectory_begin_s) + ", " + seconds(m.trajectory_end_s) +
+                       "] s (time offset " + seconds(time_offset_s) + " s); the relations span [" +
+                       seconds(first_s) + ", " + seconds(last_s) + "] s");
+  }
+  m.count = m.errors.size();
+  const MeanStd t = mean_and_sample_std(trans_m), t2 = mean_and_sample_std(trans_sq_m2);
+  const MeanStd r = mean_and_sample_std(rot_rad), r2 = mean_and_sample_std(rot_sq_rad2);
+  m.trans_mean_m = t.mean;
+  m.trans_std_m = t.std;
+  m.trans_sq_mean_m2 = t2.mean;
+  m.trans_sq_std_m2 = t2.std;
+  m.rot_mean_rad = r.mean;
+  m.rot_std_rad = r.std;
+  m.rot_sq_mean_rad2 = r2.mean;
+  m.rot_sq_std_rad2 = r2.std;
+  return m;
+}
+
+}  // namespace tessera

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "tessera/eval/trajectory_error.hpp"
 
 namespace tessera::cli {
 
@@ -97,6 +98,60 @@ class BobCommand : public Command {
   std::uint64_t seed_ = 1;
   std::optional<std::string> start_;
   std::filesystem::path out_ = "out/bob";
+  bool quiet_ = false;
+};
+
+/// tessera eval relations | ate: scores a trajectory against ground-truth relations (Kummerle et
+/// al. 2009) or a reference trajectory (TUM ATE and RPE, Sturm et al. 2012).
+class EvalCommand : public Command {
+ public:
+  explicit EvalCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  [[nodiscard]] int run_relations() const;
+  [[nodiscard]] int run_ate() const;
+
+  CLI::App* relations_ = nullptr;
+  CLI::App* ate_ = nullptr;
+  std::filesystem::path trajectory_;
+  std::filesystem::path relations_file_;
+  std::filesystem::path reference_;
+  double time_offset_s_ = 0.0;
+  TrajectoryErrorOptions options_;
+  std::optional<std::filesystem::path> out_;
+};
+
+/// tessera posegraph optimize: least-squares optimisation of a g2o pose graph (slam::optimize),
+/// written back as g2o with a report.json.
+class PosegraphCommand : public Command {
+ public:
+  explicit PosegraphCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  CLI::App* optimize_ = nullptr;
+  std::filesystem::path in_;
+  std::filesystem::path out_;
+  std::optional<std::filesystem::path> report_;
+  int iterations_ = 0;  // set from slam::OptimizeOptions in the constructor
+  bool quiet_ = false;
+};
+
+/// tessera slam: laser SLAM on a 2D laser log (slam/laser_slam.hpp); writes map, trajectory, pose
+/// graph and report.json, and scores the trajectory when given relations.
+class SlamCommand : public Command {
+ public:
+  explicit SlamCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  std::filesystem::path log_;
+  std::filesystem::path out_ = "out/slam";
+  std::optional<std::filesystem::path> relations_;
+  double time_offset_s_ = 0.0;
+  double map_resolution_m_ = 0.05;
+  bool no_loop_closure_ = false;
   bool quiet_ = false;
 };
 

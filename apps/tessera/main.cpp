@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
   InfoCommand info(app);
   ConvertCommand convert(app);
   BobCommand bob(app);
+  PosegraphCommand posegraph(app);
+  EvalCommand eval(app);
+  SlamCommand slam(app);
 
   try {
     app.parse(argc, argv);
@@ -28,5 +31,8 @@ int main(int argc, char** argv) {
   if (info.parsed()) return info.run();
   if (convert.parsed()) return convert.run();
   if (bob.parsed()) return bob.run();
+  if (posegraph.parsed()) return posegraph.run();
+  if (eval.parsed()) return eval.run();
+  if (slam.parsed()) return slam.run();
   return kExitUsage;
 }

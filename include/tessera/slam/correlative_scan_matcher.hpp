@@ -1,0 +1,102 @@
+#pragma once
+// Correlative scan matching: score every pose of a discretised search window by how occupied the
+// grid is where the scan's points land (Olson 2009, "Real-time correlative scan matching").
+//  - match_real_time: exhaustive at full resolution over a small window, with a penalty for moving
+//    away from the prior (Hess et al. 2016, Sec. V; Cartographer's RealTimeCorrelativeScanMatcher).
+//  - BranchAndBoundMatcher: a wide window (metres, a full turn) searched by branch and bound over
+//    precomputed max-pooled grids, whose scores bound every finer pose below them (Olson 2009
+//    Sec. III-D "multi-resolution"; Hess et al. 2016 Sec. V-B and Algorithm 3). Returns the same
+//    best pose as exhaustive search at the finest level, much faster.
+// Scores are mean probabilities of the points' cells (unknown and outside cells count as
+// kMinProbability), so they lie in [kMinProbability, kMaxProbability].
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessera/core/pose2.hpp"
+#include "tessera/core/vec2.hpp"
+#include "tessera/slam/probability_grid.hpp"
+
+namespace tessera::slam {
+
+/// A scan's pose in a grid's frame and its score.
+struct ScanMatch {
+  Pose2 T_grid_robot;
+  double score = 0.0;
+};
+
+/// The angle step at which the farthest point moves by at most one cell (Hess et al. 2016, eq. 7):
+/// acos(1 - r^2 / (2 d_max^2)).
+[[nodiscard]] double angular_search_step_rad(double resolution_m, double max_point_range_m);
+
+struct RealTimeMatcherOptions {
+  double linear_window_m = 0.1;     // +- around the prior, in x and in y
+  double angular_window_rad = 0.2;  // +- around the prior
+  /// The score is multiplied by exp(-(w_t * |dt| + w_r * |dtheta|)^2), so that among poses that
+  /// fit about equally the one nearest the prior wins (Cartographer's delta cost weights).
+  double translation_delta_cost_weight = 0.1;  // per metre
+  double rotation_delta_cost_weight = 0.1;     // per radian
+};
+
+/// Empty when usable; otherwise names the field and the rule it breaks.
+[[nodiscard]] std::optional<std::string> validate(const RealTimeMatcherOptions& o);
+
+/// Exhaustive search over the window around T_grid_robot_prior at the grid's resolution and
+/// angular_search_step_rad. points_robot: the scan in the robot frame. The returned score is the
+/// weighted one. Cost: O(angles * cells of the window * points).
+[[nodiscard]] ScanMatch match_real_time(const ProbabilityGrid& grid,
+                                        const Pose2& T_grid_robot_prior,
+                                        const std::vector<Vec2>& points_robot,
+                                        const RealTimeMatcherOptions& options);
+
+/// A search window around a prior pose: +-linear_m in x and y, +-angular_rad in heading (pi or
+/// more: a full turn).
+struct SearchWindow {
+  double linear_m = 5.0;
+  double angular_rad = 3.14159265358979323846;
+};
+
+/// The precomputed grids of branch and bound: level d holds, for every cell (x, y), the highest
+/// cell value of the original grid in [x, x + 2^d) x [y, y + 2^d) (quantised to 8 bits: 0 for
+/// kMinProbability and unknown, 255 for kMaxProbability). Built once per finished submap.
+class BranchAndBoundMatcher {
+ public:
+  /// depth: number of levels (1 = only the full-resolution one). Cost: O(depth * cells).
+  BranchAndBoundMatcher(const ProbabilityGrid& grid, int depth);
+
+  [[nodiscard]] int depth() const { return static_cast<int>(levels_.size()); }
+  [[nodiscard]] const GridGeometry& geometry() const { return geometry_; }
+  [[nodiscard]] std::size_t memory_bytes() const;
+
+  /// The best pose within `window` around T_grid_robot_prior whose score reaches min_score, by
+  /// branch and bound; nullopt if none does. Translations are whole cells from the prior, angles
+  /// whole steps of angular_search_step_rad. The poses within 2 cells and 3 angle steps of the
+  /// prior are scored first, so that a good estimate prunes the tree early; among equal scores the
+  /// first found wins (a pose near the prior, else the one of the most promising branch).
+  /// Cost: O(angles * points) to discretise, then typically a small share of the exhaustive
+  /// O(angles * window cells * points).
+  [[nodiscard]] std::optional<ScanMatch> match(const Pose2& T_grid_robot_prior,
+                                               const std::vector<Vec2>& points_robot,
+                                               const SearchWindow& window, double min_score) const;
+
+  /// The same search scoring every candidate at full resolution (the reference for tests).
+  [[nodiscard]] std::optional<ScanMatch> match_exhaustive(const Pose2& T_grid_robot_prior,
+                                                          const std::vector<Vec2>& points_robot,
+                                                          const SearchWindow& window,
+                                                          double min_score) const;
+
+ private:
+  struct Level {
+    int width = 0;   // the original width + 2^d - 1: cells x in [-(2^d - 1), original width)
+    int height = 0;  // likewise
+    int offset = 0;  // 2^d - 1
+    std::vector<std::uint8_t> cells;
+  };
+  struct Search;
+
+  GridGeometry geometry_;
+  std::vector<Level> levels_;
+};
+
+}  // namespace tessera::slam

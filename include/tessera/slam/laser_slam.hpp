@@ -1,0 +1,169 @@
+#pragma once
+// Laser SLAM over a 2D laser log: local SLAM (every scan matched against the active submap,
+// odometry increments as the prior), submaps, a pose graph of submaps and scan nodes, loop closure
+// by branch and bound, and Ceres optimisation (Hess et al. 2016, "Real-time loop closure in 2D
+// LIDAR SLAM" (Cartographer), Sec. IV-V; Olson 2009 for the correlative search; Konolige et al.
+// 2010 (Karto) for the graph of scans; the lecture's grid-matching SLAM for the idea of matching a
+// scan against the map built so far). docs/decisions/0007-laser-slam-design.md records the choices.
+//
+// Everything runs on the calling thread, in input order: the result depends only on the log and
+// the options.
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessera/core/result.hpp"
+#include "tessera/core/stamped_pose2.hpp"
+#include "tessera/grid/occupancy_grid.hpp"
+#include "tessera/sensors/laser_log.hpp"
+#include "tessera/slam/correlative_scan_matcher.hpp"
+#include "tessera/slam/loop_closer.hpp"
+#include "tessera/slam/motion_filter.hpp"
+#include "tessera/slam/pose_graph.hpp"
+#include "tessera/slam/scan_points.hpp"
+#include "tessera/slam/scan_refiner.hpp"
+#include "tessera/slam/submap.hpp"
+
+namespace tessera::slam {
+
+/// How stiff a kind of pose-graph constraint is: standard deviations of its translation (each
+/// axis) and heading. The information matrix is diag(1/s_t^2, 1/s_t^2, 1/s_r^2).
+struct ConstraintSigmas {
+  double translation_m = 0.02;
+  double rotation_rad = 0.01;
+};
+
+/// Where a run is, for a progress display.
+struct SlamProgress {
+  int scans_done = 0;
+  int scans_total = 0;  // 0 when unknown (scans fed one by one)
+  int nodes = 0;
+  int submaps = 0;
+  int loop_closures = 0;
+};
+
+struct LaserSlamOptions {
+  ScanPointsOptions points;
+  /// Voxel size of the points used for local matching (0: every point).
+  double matching_voxel_m = 0.0;
+  /// Points for the branch-and-bound search of loop closure: few and spread evenly (at least 40,
+  /// in voxels of up to 0.5 m). The search cost is linear in them; the refinement after it uses
+  /// every point. On Intel, 40 points instead of 100 halve the search time and leave a quarter
+  /// as many wrong matches (the refined score, over all points, must pass the threshold too).
+  AdaptiveVoxelFilterOptions loop_points{0.5, 40, 30.0};
+  SubmapOptions submaps;
+  /// Which scans become pose-graph nodes and go into submaps; the others are matched and placed
+  /// relative to the last node.
+  MotionFilterOptions motion_filter;
+  /// Correlative search before refinement (Olson 2009); off: refine from the odometry prior alone.
+  bool real_time_search = true;
+  RealTimeMatcherOptions real_time;
+  /// Refinement after the search. Translation is tied to the odometry prediction (Intel's wheel
+  /// odometry is good over one scan); heading is left to the grid: the raw odometry's heading
+  /// error per scan is larger than what a rotation weight should pull towards (measured on Intel:
+  /// weight 40 spirals the map, 0 gives 0.26 deg short-relation error).
+  ScanRefinerOptions refiner{1.0, 10.0, 0.0, 20};
+
+  bool loop_closure = true;
+  LoopCloserOptions loop_closer;
+  /// A (node, finished submap) pair is searched only when at least this share of the node's loop
+  /// points, placed at the current estimate, fall on cells the submap knows.
+  double loop_min_overlap = 0.5;
+  /// Share of the (node, finished submap) pairs in range that are searched, per submap, chosen by
+  /// a deterministic counter (Cartographer's FixedRatioSampler).
+  double loop_sampling_ratio = 0.3;
+  /// A pair whose search in loop_closer.window failed is searched again in this wider window
+  /// (a full turn by default) for this share of such pairs, per submap: it finds loops after a
+  /// drift larger than the window, at about 10x the cost of a search (0: never).
+  SearchWindow global_window{5.0, 3.14159265358979323846};
+  double global_sampling_ratio = 0.01;
+  /// The score a match in the global window must reach: a wide window holds more look-alikes.
+  double global_min_score = 0.72;
+  /// Optimise the graph after this many new nodes when new loop constraints came in.
+  int optimize_every_n_nodes = 60;
+  int optimizer_iterations = 30;
+  /// Consecutive nodes: their relative pose from local SLAM.
+  ConstraintSigmas local_sigmas{0.02, 0.01};
+  /// A node in the submaps it was inserted into.
+  ConstraintSigmas submap_sigmas{0.02, 0.01};
+  /// A node matched into an older submap (robust): fixed sigmas, or (when loop_hessian_scale > 0)
+  /// the refinement's J^T J times loop_hessian_scale, so a match along a corridor constrains only
+  /// across it (the idea of Olson 2009 Sec. IV and Karto's response covariance). A scale of 80
+  /// gives a typical Intel match about 2 cm across its best-fixed direction; on Intel it scores
+  /// the same as fixed sigmas, so the simpler one is the default.
+  ConstraintSigmas loop_sigmas{0.02, 0.01};
+  double loop_hessian_scale = 0.0;
+  /// Huber scale of robust constraints, in units of the whitened residual.
+  double huber_scale = 1.0;
+
+  /// The final map: every node's scan at its optimised pose.
+  double map_resolution_m = 0.05;
+  RangeInsertOptions map_insert{0.6, 0.45, true};
+
+  /// Called after every scan (on the calling thread).
+  std::function<void(const SlamProgress&)> progress;
+};
+
+/// Empty when usable; otherwise names the field and the rule it breaks.
+[[nodiscard]] std::optional<std::string> validate(const LaserSlamOptions& o);
+
+struct LaserSlamStats {
+  int scans = 0;
+  int nodes = 0;
+  int submaps = 0;
+  int loop_searches = 0;    // (node, submap) pairs searched
+  int global_searches = 0;  // of which also searched in the global window
+  int loop_closures = 0;    // accepted constraints to submaps the node was not inserted into
+  int optimizations = 0;
+  /// The largest difference between an accepted loop match and the estimate it started from.
+  double max_loop_correction_m = 0.0;
+  double max_loop_correction_rad = 0.0;
+  int backward_stamps = 0;  // scans stamped earlier than the scan before them
+  double matching_s = 0.0;  // local SLAM: matching and submap insertion
+  double loop_search_s = 0.0;
+  double optimization_s = 0.0;
+  double map_s = 0.0;
+};
+
+struct LaserSlamResult {
+  /// The robot pose at every input scan, in input order with the scans' stamps (map frame).
+  std::vector<StampedPose2> trajectory;
+  /// The same from local SLAM alone (scan-to-submap matching, before the pose graph).
+  std::vector<StampedPose2> local_trajectory;
+  /// Vertices: submaps and nodes in creation order; ids equal vertex indices.
+  PoseGraph graph;
+  /// For every vertex of `graph`: the scan index of a node, or -1 for a submap.
+  std::vector<int> vertex_scan;
+  OccupancyGrid map;
+  LaserSlamStats stats;
+};
+
+/// The pipeline, fed one scan at a time (any source of StampedScan: a log file, the simulator).
+class LaserSlam {
+ public:
+  /// Precondition: validate(options) is empty.
+  explicit LaserSlam(const LaserSlamOptions& options);
+  ~LaserSlam();
+  LaserSlam(const LaserSlam&) = delete;
+  LaserSlam& operator=(const LaserSlam&) = delete;
+
+  /// Processes the next scan. `scans_total` only feeds the progress report (0: unknown).
+  /// Runtime error if an optimisation fails.
+  [[nodiscard]] Status add_scan(const StampedScan& scan, int scans_total = 0);
+
+  /// Final optimisation, trajectory and map. Call once, after the last scan.
+  [[nodiscard]] Result<LaserSlamResult> finish();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Runs the pipeline over a whole log, in file order. Usage error for invalid options, input
+/// error for a log without scans.
+[[nodiscard]] Result<LaserSlamResult> run_laser_slam(const LaserLog& log,
+                                                     const LaserSlamOptions& options);
+
+}  // namespace tessera::slam

@@ -1,0 +1,87 @@
+#pragma once
+// Submaps: small probability grids built from a few dozen consecutive scans, rigid once finished,
+// so that loop closure moves whole submaps instead of cells (Hess et al. 2016, Sec. IV-B; Konolige
+// et al. 2010 do the same with local chains of scans). Two submaps are active at a time and every
+// scan goes into both; the older one, which holds twice the newer one's scans, is what the next
+// scan is matched against, so matching never runs on a nearly empty grid.
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessera/core/pose2.hpp"
+#include "tessera/slam/probability_grid.hpp"
+#include "tessera/slam/scan_points.hpp"
+
+namespace tessera::slam {
+
+struct SubmapOptions {
+  double resolution_m = 0.05;
+  /// Scans inserted into the newest submap before the next one starts; each finished submap holds
+  /// twice this many (Cartographer's num_range_data).
+  int scans_per_submap = 90;
+  /// Side of a new submap's grid; it grows as scans reach beyond it.
+  double initial_size_m = 16.0;
+  RangeInsertOptions insert;
+};
+
+/// Empty when usable; otherwise names the field and the rule it breaks.
+[[nodiscard]] std::optional<std::string> validate(const SubmapOptions& o);
+
+/// One submap. Its grid lives in the submap frame, whose pose in the local-SLAM frame is
+/// local_pose() (the position of the scan that started it, heading 0); the grid is axis-aligned in
+/// that frame.
+class Submap {
+ public:
+  Submap(const Pose2& T_local_submap, const SubmapOptions& options);
+
+  [[nodiscard]] const Pose2& local_pose() const { return T_local_submap_; }
+  [[nodiscard]] const ProbabilityGrid& grid() const { return grid_; }
+  [[nodiscard]] int num_scans() const { return num_scans_; }
+  [[nodiscard]] bool finished() const { return finished_; }
+
+  /// Inserts a scan taken at T_local_robot. Precondition: !finished().
+  void insert(const ScanPoints& points, const Pose2& T_local_robot, const RangeInserter& inserter);
+  void finish() { finished_ = true; }
+
+ private:
+  Pose2 T_local_submap_;
+  ProbabilityGrid grid_;
+  int num_scans_ = 0;
+  bool finished_ = false;
+};
+
+/// Every submap of a run, with the window of the (at most) two active ones. Submap ids are their
+/// index in creation order; references stay valid while submaps are added.
+class ActiveSubmaps {
+ public:
+  explicit ActiveSubmaps(const SubmapOptions& options);
+
+  /// What one insert did: the submaps the scan went into (oldest first) and the submap it
+  /// finished, if any.
+  struct Insertion {
+    std::vector<int> inserted_into;
+    std::optional<int> finished;
+  };
+  /// Inserts a scan taken at T_local_robot into the active submaps, starting a new submap first
+  /// when the newest is full and finishing the oldest when it holds 2 * scans_per_submap scans.
+  Insertion insert(const ScanPoints& points, const Pose2& T_local_robot);
+
+  /// The submap the next scan should be matched against (the oldest active one); nullopt before
+  /// the first insert.
+  [[nodiscard]] std::optional<int> matching_id() const;
+  [[nodiscard]] const Submap& submap(int id) const {
+    return submaps_[static_cast<std::size_t>(id)];
+  }
+  [[nodiscard]] int size() const { return static_cast<int>(submaps_.size()); }
+  /// The active submaps, oldest first.
+  [[nodiscard]] const std::vector<int>& active_ids() const { return active_; }
+
+ private:
+  SubmapOptions options_;
+  RangeInserter inserter_;
+  std::deque<Submap> submaps_;
+  std::vector<int> active_;
+};
+
+}  // namespace tessera::slam

@@ -1,0 +1,338 @@
+#include "tessera/slam/correlative_scan_matcher.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace tessera::slam {
+namespace {
+
+double max_range_of(const std::vector<Vec2>& points) {
+  double r = 0.0;
+  for (const Vec2& p : points) r = std::max(r, p.norm());
+  return r;
+}
+
+/// Heading offsets of a search: k * step for |k * step| <= window, or an even split of the full
+/// turn when the window reaches pi.
+std::vector<double> angle_offsets(double angular_window_rad, double step_rad) {
+  std::vector<double> out;
+  constexpr double kPi = std::numbers::pi;
+  if (angular_window_rad >= kPi) {
+    const int m = std::max(1, static_cast<int>(std::ceil(2.0 * kPi / step_rad)));
+    const double step = 2.0 * kPi / m;
+    for (int k = -m / 2; k < m - m / 2; ++k) out.push_back(k * step);
+  } else {
+    const int n = static_cast<int>(std::ceil(angular_window_rad / step_rad));
+    for (int k = -n; k <= n; ++k) out.push_back(k * step_rad);
+  }
+  return out;
+}
+
+/// The cells the points fall in when the robot is at (prior translation, prior heading + angle).
+void discretize(const GridGeometry& g, const Pose2& prior, double angle_offset_rad,
+                const std::vector<Vec2>& points, std::vector<Cell>& cells) {
+  cells.clear();
+  const Pose2 T{prior.x, prior.y, normalize_angle(prior.theta + angle_offset_rad)};
+  const double c = std::cos(T.theta), s = std::sin(T.theta);
+  for (const Vec2& p : points) {
+    cells.push_back(g.cell_at_unchecked({T.x + c * p.x - s * p.y, T.y + s * p.x + c * p.y}));
+  }
+}
+
+}  // namespace
+
+double angular_search_step_rad(double resolution_m, double max_point_range_m) {
+  const double d = std::max(max_point_range_m, resolution_m);
+  const double x = 1.0 - resolution_m * resolution_m / (2.0 * d * d);
+  return std::acos(std::clamp(x, -1.0, 1.0));
+}
+
+std::optional<std::string> validate(const RealTimeMatcherOptions& o) {
+  if (!(o.linear_window_m >= 0.0)) return "linear_window_m must be >= 0";
+  if (!(o.angular_window_rad >= 0.0)) return "angular_window_rad must be >= 0";
+  if (!(o.translation_delta_cost_weight >= 0.0))
+    return "translation_delta_cost_weight must be >= 0";
+  if (!(o.rotation_delta_cost_weight >= 0.0)) return "rotation_delta_cost_weight must be >= 0";
+  return std::nullopt;
+}
+
+ScanMatch match_real_time(const ProbabilityGrid& grid, const Pose2& T_grid_robot_prior,
+                          const std::vector<Vec2>& points_robot,
+                          const RealTimeMatcherOptions& options) {
+  ScanMatch best{T_grid_robot_prior, -1.0};
+  if (points_robot.empty()) return {T_grid_robot_prior, 0.0};
+  const GridGeometry& g = grid.geometry();
+  const double res = g.resolution_m();
+  const std::vector<double> angles = angle_offsets(
+      options.angular_window_rad, angular_search_step_rad(res, max_range_of(points_robot)));
+  const int n_lin = static_cast<int>(std::ceil(options.linear_window_m / res - 1e-9));
+  const std::vector<float>& table = value_to_probability_table();
+  const std::vector<std::uint16_t>& values = grid.values();
+  const int w = g.width(), h = g.height();
+  const auto outside = static_cast<float>(kMinProbability);
+  const double inv_n = 1.0 / static_cast<double>(points_robot.size());
+  std::vector<Cell> cells;
+  for (const double a : angles) {
+    discretize(g, T_grid_robot_prior, a, points_robot, cells);
+    for (int dx = -n_lin; dx <= n_lin; ++dx) {
+      for (int dy = -n_lin; dy <= n_lin; ++dy) {
+        float sum = 0.0f;
+        for (const Cell c : cells) {
+          const int x = c.x + dx, y = c.y + dy;
+          sum += (x >= 0 && x < w && y >= 0 && y < h)
+                     ? table[values[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                                    static_cast<std::size_t>(x)]]
+                     : outside;
+        }
+        const double penalty = options.translation_delta_cost_weight * res * std::hypot(dx, dy) +
+                               options.rotation_delta_cost_weight * std::abs(a);
+        const double score = static_cast<double>(sum) * inv_n * std::exp(-penalty * penalty);
+        if (score > best.score) {
+          best.score = score;
+          best.T_grid_robot = {T_grid_robot_prior.x + dx * res, T_grid_robot_prior.y + dy * res,
+                               normalize_angle(T_grid_robot_prior.theta + a)};
+        }
+      }
+    }
+  }
+  return best;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Branch and bound
+
+namespace {
+
+std::uint8_t quantize(std::uint16_t value) {
+  if (value == kUnknownCellValue) return 0;
+  const double p = value_to_probability(value);
+  return static_cast<std::uint8_t>(
+      std::lround(255.0 * (p - kMinProbability) / (kMaxProbability - kMinProbability)));
+}
+
+double score_of(long sum, std::size_t points) {
+  return kMinProbability + (kMaxProbability - kMinProbability) * static_cast<double>(sum) /
+                               (255.0 * static_cast<double>(points));
+}
+
+}  // namespace
+
+BranchAndBoundMatcher::BranchAndBoundMatcher(const ProbabilityGrid& grid, int depth)
+    : geometry_(grid.geometry()) {
+  TESSERA_ASSERT(depth >= 1);
+  const int w = geometry_.width(), h = geometry_.height();
+  Level base;
+  base.width = w;
+  base.height = h;
+  base.offset = 0;
+  base.cells.resize(geometry_.size());
+  for (std::size_t i = 0; i < base.cells.size(); ++i) base.cells[i] = quantize(grid.values()[i]);
+  levels_.push_back(std::move(base));
+  for (int d = 1; d < depth; ++d) {
+    const Level& finer = levels_.back();
+    const int half = 1 << (d - 1);
+    Level level;
+    level.offset = (1 << d) - 1;
+    level.width = w + level.offset;
+    level.height = h + level.offset;
+    level.cells.assign(
+        static_cast<std::size_t>(level.width) * static_cast<std::size_t>(level.height), 0);
+    // Level d at (x, y) covers [x, x + 2^d): the four level d-1 cells at offsets 0 and half.
+    const auto at = [&finer](int x, int y) -> std::uint8_t {
+      const int fx = x + finer.offset, fy = y + finer.offset;
+      if (fx < 0 || fy < 0 || fx >= finer.width || fy >= finer.height) return 0;
+      return finer.cells[static_cast<std::size_t>(fy) * static_cast<std::size_t>(finer.width) +
+                         static_cast<std::size_t>(fx)];
+    };
+    for (int yy = 0; yy < level.height; ++yy) {
+      const int y = yy - level.offset;
+      for (int xx = 0; xx < level.width; ++xx) {
+        const int x = xx - level.offset;
+        level.cells[static_cast<std::size_t>(yy) * static_cast<std::size_t>(level.width) +
+                    static_cast<std::size_t>(xx)] =
+            std::max(std::max(at(x, y), at(x + half, y)),
+                     std::max(at(x, y + half), at(x + half, y + half)));
+      }
+    }
+    levels_.push_back(std::move(level));
+  }
+}
+
+std::size_t BranchAndBoundMatcher::memory_bytes() const {
+  std::size_t n = 0;
+  for (const Level& l : levels_) n += l.cells.size();
+  return n;
+}
+
+/// One search: the scan discretised at every heading, the window in cells, and scoring.
+struct BranchAndBoundMatcher::Search {
+  struct Candidate {
+    int angle = 0;  // index into angles
+    int x = 0;      // cell offset from the prior
+    int y = 0;
+    long sum = 0;  // sum of quantised cell values
+  };
+
+  const BranchAndBoundMatcher& matcher;
+  std::vector<double> angles;
+  std::vector<std::vector<Cell>> scans;
+  int n_lin = 0;
+  int zero_angle = 0;  // index of the smallest |angle|
+
+  Search(const BranchAndBoundMatcher& m, const Pose2& prior, const std::vector<Vec2>& points,
+         const SearchWindow& window)
+      : matcher(m) {
+    const double res = m.geometry_.resolution_m();
+    angles = angle_offsets(window.angular_rad, angular_search_step_rad(res, max_range_of(points)));
+    n_lin = static_cast<int>(std::ceil(window.linear_m / res - 1e-9));
+    scans.resize(angles.size());
+    for (std::size_t a = 0; a < angles.size(); ++a) {
+      discretize(m.geometry_, prior, angles[a], points, scans[a]);
+      if (std::abs(angles[a]) < std::abs(angles[static_cast<std::size_t>(zero_angle)])) {
+        zero_angle = static_cast<int>(a);
+      }
+    }
+  }
+
+  [[nodiscard]] long score(int level_index, const Candidate& c) const {
+    const Level& level = matcher.levels_[static_cast<std::size_t>(level_index)];
+    long sum = 0;
+    const int ox = c.x + level.offset, oy = c.y + level.offset;
+    for (const Cell cell : scans[static_cast<std::size_t>(c.angle)]) {
+      const int x = cell.x + ox, y = cell.y + oy;
+      if (x < 0 || y < 0 || x >= level.width || y >= level.height) continue;
+      sum += level.cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) +
+                         static_cast<std::size_t>(x)];
+    }
+    return sum;
+  }
+
+  static void sort(std::vector<Candidate>& candidates) {
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.sum > b.sum; });
+  }
+
+  /// Hess et al. 2016, Algorithm 3 (depth-first, best child first): the best candidate below
+  /// `candidates` whose sum exceeds `bound`, or nullopt.
+  std::optional<Candidate> branch(int level, std::vector<Candidate>& candidates, long bound) const {
+    std::optional<Candidate> best;
+    for (const Candidate& c : candidates) {
+      if (c.sum <= bound) break;  // sorted: no later candidate can do better
+      if (level == 0) return c;
+      const int half = 1 << (level - 1);
+      std::vector<Candidate> children;
+      children.reserve(4);
+      for (const int dx : {0, half}) {
+        if (c.x + dx > n_lin) break;
+        for (const int dy : {0, half}) {
+          if (c.y + dy > n_lin) break;
+          Candidate child{c.angle, c.x + dx, c.y + dy, 0};
+          child.sum = score(level - 1, child);
+          children.push_back(child);
+        }
+      }
+      sort(children);
+      if (std::optional<Candidate> r = branch(level - 1, children, bound)) {
+        best = r;
+        bound = r->sum;
+      }
+    }
+    return best;
+  }
+
+  [[nodiscard]] ScanMatch to_match(const Pose2& prior, const Candidate& c,
+                                   std::size_t points) const {
+    const double res = matcher.geometry_.resolution_m();
+    return {{prior.x + c.x * res, prior.y + c.y * res,
+             normalize_angle(prior.theta + angles[static_cast<std::size_t>(c.angle)])},
+            score_of(c.sum, points)};
+  }
+};
+
+namespace {
+
+/// The neighbourhood of the prior scored before branch and bound: +-kNearAngles angle steps,
+/// +-kNearCells cells.
+constexpr int kNearAngles = 3;
+constexpr int kNearCells = 2;
+
+/// The largest sum that does not reach min_score: a candidate must beat it.
+long sum_bound(double min_score, std::size_t points) {
+  const double q = (min_score - kMinProbability) / (kMaxProbability - kMinProbability) * 255.0 *
+                   static_cast<double>(points);
+  if (q <= 0.0) return -1;
+  return static_cast<long>(std::ceil(q - 1e-9)) - 1;
+}
+
+}  // namespace
+
+std::optional<ScanMatch> BranchAndBoundMatcher::match(const Pose2& T_grid_robot_prior,
+                                                      const std::vector<Vec2>& points_robot,
+                                                      const SearchWindow& window,
+                                                      double min_score) const {
+  if (points_robot.empty()) return std::nullopt;
+  const Search search(*this, T_grid_robot_prior, points_robot, window);
+  const int top = depth() - 1;
+  const int step = 1 << top;
+  std::vector<Search::Candidate> roots;
+  for (int a = 0; a < static_cast<int>(search.angles.size()); ++a) {
+    for (int x = -search.n_lin; x <= search.n_lin; x += step) {
+      for (int y = -search.n_lin; y <= search.n_lin; y += step) {
+        Search::Candidate c{a, x, y, 0};
+        c.sum = search.score(top, c);
+        roots.push_back(c);
+      }
+    }
+  }
+  Search::sort(roots);
+  // A good first answer makes the bound prune most of the tree: score the poses right around the
+  // prior at full resolution first (the estimate is usually close). Branch and bound then only
+  // looks for strictly better poses, so the result is still the window's best.
+  long bound = sum_bound(min_score, points_robot.size());
+  std::optional<Search::Candidate> best;
+  const int zero = search.zero_angle;
+  for (int a = std::max(0, zero - kNearAngles);
+       a <= std::min(static_cast<int>(search.angles.size()) - 1, zero + kNearAngles); ++a) {
+    for (int x = -std::min(kNearCells, search.n_lin); x <= std::min(kNearCells, search.n_lin);
+         ++x) {
+      for (int y = -std::min(kNearCells, search.n_lin); y <= std::min(kNearCells, search.n_lin);
+           ++y) {
+        Search::Candidate c{a, x, y, 0};
+        c.sum = search.score(0, c);
+        if (c.sum > bound) {
+          best = c;
+          bound = c.sum;
+        }
+      }
+    }
+  }
+  if (std::optional<Search::Candidate> better = search.branch(top, roots, bound)) best = better;
+  if (!best) return std::nullopt;
+  return search.to_match(T_grid_robot_prior, *best, points_robot.size());
+}
+
+std::optional<ScanMatch> BranchAndBoundMatcher::match_exhaustive(
+    const Pose2& T_grid_robot_prior, const std::vector<Vec2>& points_robot,
+    const SearchWindow& window, double min_score) const {
+  if (points_robot.empty()) return std::nullopt;
+  const Search search(*this, T_grid_robot_prior, points_robot, window);
+  std::optional<Search::Candidate> best;
+  long bound = sum_bound(min_score, points_robot.size());
+  for (int a = 0; a < static_cast<int>(search.angles.size()); ++a) {
+    for (int x = -search.n_lin; x <= search.n_lin; ++x) {
+      for (int y = -search.n_lin; y <= search.n_lin; ++y) {
+        Search::Candidate c{a, x, y, 0};
+        c.sum = search.score(0, c);
+        if (c.sum > bound) {
+          best = c;
+          bound = c.sum;
+        }
+      }
+    }
+  }
+  if (!best) return std::nullopt;
+  return search.to_match(T_grid_robot_prior, *best, points_robot.size());
+}
+
+}  // namespace tessera::slam

@@ -1,0 +1,405 @@
+// The laser SLAM pipeline (Hess et al. 2016, Sec. IV-V): local SLAM matches every scan against the
+// active submap; kept scans become pose-graph nodes tied to the submaps they went into; finished
+// submaps are searched for older and newer nodes (loop closure); Ceres optimises the graph at fixed
+// node counts and once more at the end.
+#include "tessera/slam/laser_slam.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace tessera::slam {
+namespace {
+
+Eigen::Matrix3d information_of(const ConstraintSigmas& s) {
+  Eigen::Matrix3d info = Eigen::Matrix3d::Zero();
+  info(0, 0) = info(1, 1) = 1.0 / (s.translation_m * s.translation_m);
+  info(2, 2) = 1.0 / (s.rotation_rad * s.rotation_rad);
+  return info;
+}
+
+std::optional<std::string> validate(const ConstraintSigmas& s, const std::string& name) {
+  if (!(s.translation_m > 0.0) || !(s.rotation_rad > 0.0)) {
+    return name + ": sigmas must be > 0";
+  }
+  return std::nullopt;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// The share of points_robot that land on known cells of `grid` with the robot at T_grid_robot.
+double known_fraction(const ProbabilityGrid& grid, const Pose2& T_grid_robot,
+                      const std::vector<Vec2>& points_robot) {
+  if (points_robot.empty()) return 0.0;
+  const GridGeometry& g = grid.geometry();
+  int known = 0;
+  for (const Vec2& p : points_robot) {
+    const Cell c = g.cell_at_unchecked(T_grid_robot * p);
+    if (g.contains(c) && grid.known(c)) ++known;
+  }
+  return static_cast<double>(known) / static_cast<double>(points_robot.size());
+}
+
+/// Cartographer's FixedRatioSampler: says yes to a share `ratio` of the calls, evenly spread.
+class FixedRatioSampler {
+ public:
+  bool pulse(double ratio) {
+    ++pulses_;
+    if (static_cast<double>(samples_) < ratio * static_cast<double>(pulses_)) {
+      ++samples_;
+      return true;
+    }
+    return false;
+  }
+
+ private:
+  long pulses_ = 0;
+  long samples_ = 0;
+};
+
+}  // namespace
+
+std::optional<std::string> validate(const LaserSlamOptions& o) {
+  if (auto p = validate(o.points)) return "points." + *p;
+  if (!(o.matching_voxel_m >= 0.0)) return "matching_voxel_m must be >= 0";
+  if (auto p = validate(o.submaps)) return "submaps." + *p;
+  if (auto p = validate(o.motion_filter)) return "motion_filter." + *p;
+  if (auto p = validate(o.real_time)) return "real_time." + *p;
+  if (auto p = validate(o.refiner)) return "refiner." + *p;
+  if (auto p = validate(o.loop_closer)) return "loop_closer." + *p;
+  if (!(o.loop_min_overlap >= 0.0 && o.loop_min_overlap <= 1.0)) {
+    return "loop_min_overlap must be in [0, 1]";
+  }
+  if (!(o.loop_sampling_ratio > 0.0 && o.loop_sampling_ratio <= 1.0)) {
+    return "loop_sampling_ratio must be in (0, 1]";
+  }
+  if (!(o.global_sampling_ratio >= 0.0 && o.global_sampling_ratio <= 1.0)) {
+    return "global_sampling_ratio must be in [0, 1]";
+  }
+  if (!(o.global_min_score > kMinProbability && o.global_min_score < kMaxProbability)) {
+    return "global_min_score must be in (0.1, 0.9)";
+  }
+  if (!(o.global_window.linear_m >= 0.0) || !(o.global_window.angular_rad >= 0.0)) {
+    return "global_window must be >= 0";
+  }
+  if (o.optimize_every_n_nodes < 1) return "optimize_every_n_nodes must be >= 1";
+  if (o.optimizer_iterations < 1) return "optimizer_iterations must be >= 1";
+  if (auto p = validate(o.local_sigmas, "local_sigmas")) return p;
+  if (auto p = validate(o.submap_sigmas, "submap_sigmas")) return p;
+  if (auto p = validate(o.loop_sigmas, "loop_sigmas")) return p;
+  if (!(o.loop_hessian_scale >= 0.0)) return "loop_hessian_scale must be >= 0";
+  if (!(o.huber_scale > 0.0)) return "huber_scale must be > 0";
+  if (!(o.map_resolution_m > 0.0)) return "map_resolution_m must be > 0";
+  if (auto p = validate(o.map_insert)) return "map_insert." + *p;
+  return std::nullopt;
+}
+
+struct LaserSlam::Impl {
+  struct ScanRecord {
+    double t_s = 0.0;
+    int anchor_node = 0;  // the last node at or before this scan
+    Pose2 T_local_robot;
+  };
+  struct Node {
+    int scan = 0;
+    int vertex = 0;
+    Pose2 T_local_robot;
+    ScanPoints points;              // for the final map
+    std::vector<Vec2> loop_points;  // for loop-closure searches
+    std::vector<int> submaps;       // the submaps it was inserted into
+  };
+  struct SubmapRecord {
+    int vertex = 0;
+    bool finished = false;
+    Vec2 box_lo_m, box_hi_m;  // known cells, submap frame
+    FixedRatioSampler sampler;
+    FixedRatioSampler global_sampler;
+  };
+
+  explicit Impl(const LaserSlamOptions& o)
+      : options(o),
+        submaps(o.submaps),
+        filter(o.motion_filter),
+        closer(o.loop_closer),
+        local_information(information_of(o.local_sigmas)),
+        submap_information(information_of(o.submap_sigmas)),
+        loop_information(information_of(o.loop_sigmas)) {}
+
+  LaserSlamOptions options;
+  ActiveSubmaps submaps;
+  MotionFilter filter;
+  LoopCloser closer;
+  Eigen::Matrix3d local_information;
+  Eigen::Matrix3d submap_information;
+  Eigen::Matrix3d loop_information;
+
+  PoseGraph graph;
+  std::vector<int> vertex_scan;
+  std::vector<Node> nodes;
+  std::vector<SubmapRecord> submap_records;
+  std::vector<ScanRecord> scans;
+  Pose2 last_odometry;
+  Pose2 last_T_local;
+  double last_t_s = 0.0;
+  int nodes_since_optimization = 0;
+  int loop_constraints_since_optimization = 0;
+  LaserSlamStats stats;
+
+  int add_vertex(const Pose2& T_global, int scan) {
+    const int v = static_cast<int>(graph.poses.size());
+    graph.poses.push_back(T_global);
+    graph.ids.push_back(v);
+    vertex_scan.push_back(scan);
+    return v;
+  }
+
+  /// Global pose of the local-SLAM frame as the latest optimisation sees it (through the newest
+  /// node).
+  [[nodiscard]] Pose2 local_to_global() const {
+    if (nodes.empty()) return {};
+    const Node& last = nodes.back();
+    return graph.poses[static_cast<std::size_t>(last.vertex)] * last.T_local_robot.inverse();
+  }
+
+  [[nodiscard]] const Pose2& global_pose(int vertex) const {
+    return graph.poses[static_cast<std::size_t>(vertex)];
+  }
+
+  /// Searches submap `submap_id` for node `node_index` if the node lies within the submap's known
+  /// box (grown by the search window) and the sampler picks the pair; adds a robust constraint on
+  /// success.
+  void maybe_close_loop(int node_index, int submap_id) {
+    Node& node = nodes[static_cast<std::size_t>(node_index)];
+    SubmapRecord& record = submap_records[static_cast<std::size_t>(submap_id)];
+    if (std::find(node.submaps.begin(), node.submaps.end(), submap_id) != node.submaps.end()) {
+      return;
+    }
+    const Pose2 guess = between(global_pose(record.vertex), global_pose(node.vertex));
+    const double margin = options.loop_closer.window.linear_m;
+    if (guess.x < record.box_lo_m.x - margin || guess.x > record.box_hi_m.x + margin ||
+        guess.y < record.box_lo_m.y - margin || guess.y > record.box_hi_m.y + margin) {
+      return;
+    }
+    // Only pairs that overlap: enough of the scan, placed at the estimate, falls on cells the
+    // submap knows. Cheap (one look-up per point) and it spares most hopeless searches.
+    const ProbabilityGrid& grid = submaps.submap(submap_id).grid();
+    if (known_fraction(grid, guess, node.loop_points) < options.loop_min_overlap) return;
+    if (!record.sampler.pulse(options.loop_sampling_ratio)) return;
+    ++stats.loop_searches;
+    std::optional<LoopMatch> match =
+        closer.match(submap_id, grid, guess, node.loop_points, node.points.returns_m);
+    if (!match && options.global_sampling_ratio > 0.0 &&
+        record.global_sampler.pulse(options.global_sampling_ratio)) {
+      ++stats.global_searches;
+      match = closer.match(submap_id, grid, guess, node.loop_points, node.points.returns_m,
+                           options.global_window, options.global_min_score);
+    }
+    if (!match) return;
+    const Pose2 correction = between(guess, match->T_submap_robot);
+    stats.max_loop_correction_m =
+        std::max(stats.max_loop_correction_m, std::hypot(correction.x, correction.y));
+    stats.max_loop_correction_rad =
+        std::max(stats.max_loop_correction_rad, std::abs(correction.theta));
+    Eigen::Matrix3d information = loop_information;
+    if (options.loop_hessian_scale > 0.0) {
+      // Plus a floor of 1 m / 1 rad sigma so that the matrix stays positive definite.
+      information = options.loop_hessian_scale * match->hessian + Eigen::Matrix3d::Identity();
+    }
+    graph.edges.push_back({record.vertex, node.vertex, match->T_submap_robot, information, true});
+    ++stats.loop_closures;
+    ++loop_constraints_since_optimization;
+  }
+
+  void on_submap_finished(int submap_id) {
+    SubmapRecord& record = submap_records[static_cast<std::size_t>(submap_id)];
+    record.finished = true;
+    const ProbabilityGrid& grid = submaps.submap(submap_id).grid();
+    if (const auto box = grid.known_box()) {
+      const GridGeometry& g = grid.geometry();
+      record.box_lo_m = g.center_of(box->min);
+      record.box_hi_m = g.center_of(box->max);
+    }
+    if (!options.loop_closure) return;
+    closer.add_submap(submap_id, grid);
+    // Older nodes that may see this submap (Cartographer's constraints for old nodes).
+    for (int k = 0; k < static_cast<int>(nodes.size()); ++k) maybe_close_loop(k, submap_id);
+  }
+
+  Status optimize_graph() {
+    const auto t0 = std::chrono::steady_clock::now();
+    OptimizeOptions o;
+    o.max_iterations = options.optimizer_iterations;
+    o.huber_scale = options.huber_scale;
+    Result<OptimizeSummary> summary = optimize(graph, o);
+    stats.optimization_s += seconds_since(t0);
+    if (!summary) return summary.error();
+    ++stats.optimizations;
+    nodes_since_optimization = 0;
+    loop_constraints_since_optimization = 0;
+    return Ok{};
+  }
+
+  Status add_scan(const StampedScan& scan, int scans_total) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const int scan_index = static_cast<int>(scans.size());
+    ScanPoints points = scan_to_points(scan.scan, scan.laser_in_robot, options.points);
+    const std::vector<Vec2> matching = voxel_filter(points.returns_m, options.matching_voxel_m);
+
+    // Prior: the last pose moved by the odometry increment (file order, whatever the stamps).
+    Pose2 T_local = scan.odometry;
+    if (scan_index > 0) {
+      if (scan.t_s < last_t_s) ++stats.backward_stamps;
+      T_local = last_T_local * between(last_odometry, scan.odometry);
+    }
+    if (const std::optional<int> id = submaps.matching_id(); id && !matching.empty()) {
+      const Submap& submap = submaps.submap(*id);
+      const Pose2 prior = between(submap.local_pose(), T_local);
+      Pose2 start = prior;
+      if (options.real_time_search) {
+        start = match_real_time(submap.grid(), prior, matching, options.real_time).T_grid_robot;
+      }
+      const RefinedPose refined =
+          refine_scan(submap.grid(), prior, start, matching, options.refiner);
+      T_local = submap.local_pose() * refined.T_grid_robot;
+    }
+    last_odometry = scan.odometry;
+    last_T_local = T_local;
+    last_t_s = scan.t_s;
+
+    if (filter.is_similar(scan.t_s, T_local)) {
+      scans.push_back({scan.t_s, static_cast<int>(nodes.size()) - 1, T_local});
+      stats.matching_s += seconds_since(t0);
+      report(scan_index + 1, scans_total);
+      return Ok{};
+    }
+
+    // A new node: insert into the active submaps and tie it into the graph.
+    const Pose2 correction = local_to_global();
+    const int submaps_before = submaps.size();
+    const ActiveSubmaps::Insertion insertion = submaps.insert(points, T_local);
+    for (int id = submaps_before; id < submaps.size(); ++id) {
+      SubmapRecord record;
+      record.vertex = add_vertex(correction * submaps.submap(id).local_pose(), -1);
+      submap_records.push_back(record);
+    }
+    Node node;
+    node.scan = scan_index;
+    node.vertex = add_vertex(correction * T_local, scan_index);
+    node.T_local_robot = T_local;
+    node.loop_points = adaptive_voxel_filter(points.returns_m, options.loop_points);
+    node.points = std::move(points);
+    node.submaps = insertion.inserted_into;
+    for (const int id : insertion.inserted_into) {
+      graph.edges.push_back({submap_records[static_cast<std::size_t>(id)].vertex, node.vertex,
+                             between(submaps.submap(id).local_pose(), T_local), submap_information,
+                             false});
+    }
+    if (!nodes.empty()) {
+      const Node& previous = nodes.back();
+      graph.edges.push_back({previous.vertex, node.vertex, between(previous.T_local_robot, T_local),
+                             local_information, false});
+    }
+    nodes.push_back(std::move(node));
+    scans.push_back({scan.t_s, static_cast<int>(nodes.size()) - 1, T_local});
+    ++nodes_since_optimization;
+    stats.matching_s += seconds_since(t0);
+
+    const auto t_loop = std::chrono::steady_clock::now();
+    if (insertion.finished) on_submap_finished(*insertion.finished);
+    if (options.loop_closure) {
+      const int k = static_cast<int>(nodes.size()) - 1;
+      for (int id = 0; id < submaps.size(); ++id) {
+        if (submap_records[static_cast<std::size_t>(id)].finished) maybe_close_loop(k, id);
+      }
+    }
+    stats.loop_search_s += seconds_since(t_loop);
+
+    if (nodes_since_optimization >= options.optimize_every_n_nodes &&
+        loop_constraints_since_optimization > 0) {
+      if (Status s = optimize_graph(); !s) return s;
+    }
+    report(scan_index + 1, scans_total);
+    return Ok{};
+  }
+
+  void report(int done, int total) const {
+    if (!options.progress) return;
+    SlamProgress p;
+    p.scans_done = done;
+    p.scans_total = total;
+    p.nodes = static_cast<int>(nodes.size());
+    p.submaps = submaps.size();
+    p.loop_closures = stats.loop_closures;
+    options.progress(p);
+  }
+
+  Result<LaserSlamResult> finish() {
+    if (stats.loop_closures > 0) {
+      if (Status s = optimize_graph(); !s) return s.error();
+    }
+    LaserSlamResult out;
+    out.trajectory.reserve(scans.size());
+    out.local_trajectory.reserve(scans.size());
+    for (const ScanRecord& s : scans) {
+      const Node& anchor = nodes[static_cast<std::size_t>(s.anchor_node)];
+      const Pose2 T_global =
+          global_pose(anchor.vertex) * between(anchor.T_local_robot, s.T_local_robot);
+      out.trajectory.push_back({s.t_s, T_global});
+      out.local_trajectory.push_back({s.t_s, s.T_local_robot});
+    }
+
+    const auto t_map = std::chrono::steady_clock::now();
+    RangeInserter inserter(options.map_insert);
+    ProbabilityGrid map;
+    for (const Node& node : nodes) {
+      const Pose2& T = global_pose(node.vertex);
+      if (map.geometry().width() == 0) {
+        const double res = options.map_resolution_m;
+        map = ProbabilityGrid(GridGeometry({T.x - 10.0, T.y - 10.0}, res,
+                                           static_cast<int>(std::ceil(20.0 / res)),
+                                           static_cast<int>(std::ceil(20.0 / res))));
+      }
+      inserter.insert(map, T, node.points);
+    }
+    out.map = map.to_occupancy_grid(2);
+    stats.map_s = seconds_since(t_map);
+
+    stats.scans = static_cast<int>(scans.size());
+    stats.nodes = static_cast<int>(nodes.size());
+    stats.submaps = submaps.size();
+    out.graph = std::move(graph);
+    out.vertex_scan = std::move(vertex_scan);
+    out.stats = stats;
+    return out;
+  }
+};
+
+LaserSlam::LaserSlam(const LaserSlamOptions& options) : impl_(std::make_unique<Impl>(options)) {
+  TESSERA_ASSERT(!validate(options));
+}
+
+LaserSlam::~LaserSlam() = default;
+
+Status LaserSlam::add_scan(const StampedScan& scan, int scans_total) {
+  return impl_->add_scan(scan, scans_total);
+}
+
+Result<LaserSlamResult> LaserSlam::finish() {
+  if (impl_->scans.empty()) return input_error("laser SLAM: no scans");
+  return impl_->finish();
+}
+
+Result<LaserSlamResult> run_laser_slam(const LaserLog& log, const LaserSlamOptions& options) {
+  if (auto problem = validate(options)) return usage_error("laser SLAM options: " + *problem);
+  if (log.scans.empty()) return input_error("laser SLAM: the log has no scans");
+  LaserSlam slam(options);
+  const int total = static_cast<int>(log.scans.size());
+  for (const StampedScan& scan : log.scans) {
+    if (Status s = slam.add_scan(scan, total); !s) return s.error();
+  }
+  return slam.finish();
+}
+
+}  // namespace tessera::slam

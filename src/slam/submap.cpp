@@ -1,0 +1,65 @@
+#include "tessera/slam/submap.hpp"
+
+#include <cmath>
+
+namespace tessera::slam {
+
+std::optional<std::string> validate(const SubmapOptions& o) {
+  if (!(o.resolution_m > 0.0)) return "resolution_m must be > 0";
+  if (o.scans_per_submap < 1) return "scans_per_submap must be >= 1";
+  if (!(o.initial_size_m > 0.0)) return "initial_size_m must be > 0";
+  return validate(o.insert);
+}
+
+namespace {
+
+GridGeometry initial_geometry(const SubmapOptions& options) {
+  const int side =
+      std::max(2, static_cast<int>(std::ceil(options.initial_size_m / options.resolution_m)));
+  const double half_m = 0.5 * side * options.resolution_m;
+  return GridGeometry({-half_m, -half_m}, options.resolution_m, side, side);
+}
+
+}  // namespace
+
+Submap::Submap(const Pose2& T_local_submap, const SubmapOptions& options)
+    : T_local_submap_(T_local_submap), grid_(initial_geometry(options)) {}
+
+void Submap::insert(const ScanPoints& points, const Pose2& T_local_robot,
+                    const RangeInserter& inserter) {
+  TESSERA_ASSERT(!finished_);
+  inserter.insert(grid_, between(T_local_submap_, T_local_robot), points);
+  ++num_scans_;
+}
+
+ActiveSubmaps::ActiveSubmaps(const SubmapOptions& options)
+    : options_(options), inserter_(options.insert) {}
+
+ActiveSubmaps::Insertion ActiveSubmaps::insert(const ScanPoints& points,
+                                               const Pose2& T_local_robot) {
+  Insertion out;
+  if (active_.empty() || submap(active_.back()).num_scans() >= options_.scans_per_submap) {
+    // The oldest active submap is finished by now (it reached 2 * scans_per_submap); it leaves the
+    // window when the new one enters.
+    if (active_.size() >= 2) active_.erase(active_.begin());
+    submaps_.emplace_back(Pose2{T_local_robot.x, T_local_robot.y, 0.0}, options_);
+    active_.push_back(static_cast<int>(submaps_.size()) - 1);
+  }
+  for (const int id : active_) {
+    submaps_[static_cast<std::size_t>(id)].insert(points, T_local_robot, inserter_);
+    out.inserted_into.push_back(id);
+  }
+  Submap& oldest = submaps_[static_cast<std::size_t>(active_.front())];
+  if (!oldest.finished() && oldest.num_scans() >= 2 * options_.scans_per_submap) {
+    oldest.finish();
+    out.finished = active_.front();
+  }
+  return out;
+}
+
+std::optional<int> ActiveSubmaps::matching_id() const {
+  if (active_.empty()) return std::nullopt;
+  return active_.front();
+}
+
+}  // namespace tessera::slam

@@ -1,0 +1,94 @@
+// tessera slam end to end: outputs and report fields on a slice of the real Intel log, and bad
+// input (exit 3, one line, nothing written).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_run.hpp"
+#include "support/data.hpp"
+
+namespace tessera {
+namespace {
+
+using support::run_cli;
+using support::TempDir;
+using ::testing::HasSubstr;
+
+std::string read_bytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// The first `scans` FLASER lines of the Intel raw log, as a log of their own.
+std::filesystem::path intel_slice(const TempDir& dir, int scans) {
+  std::ifstream in(support::data_path("laser/intel/intel-raw-first5505-sot.clf"));
+  std::string text, line;
+  int n = 0;
+  while (n < scans && std::getline(in, line)) {
+    if (line.rfind("FLASER", 0) != 0) continue;
+    text += line + "\n";
+    ++n;
+  }
+  const auto path = dir.path() / "intel-slice.clf";
+  support::write_bytes(path, text);
+  return path;
+}
+
+TEST(CliSlam, WritesMapTrajectoryGraphAndReport) {
+  TESSERA_REQUIRE_DATA(support::data_path("laser/intel/intel-raw-first5505-sot.clf"));
+  TempDir dir;
+  const auto log = intel_slice(dir, 150);
+  const auto out = dir.path() / "out";
+  const support::CliRun run = run_cli("slam --log " + log.string() + " --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("slam: 150 scans"));
+  for (const char* f :
+       {"map.yaml", "map.pgm", "map.png", "trajectory.txt", "graph.g2o", "report.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  }
+  const std::string trajectory = read_bytes(out / "trajectory.txt");
+  std::size_t poses = 0;
+  for (std::size_t i = 0; i < trajectory.size(); ++i) {
+    if (trajectory[i] == '\n' && (i == 0 || trajectory[i - 1] != '\n')) ++poses;
+  }
+  EXPECT_GE(poses, 150u);  // one line per scan (plus any header comment)
+  const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
+  EXPECT_EQ(report["command"], "slam");
+  EXPECT_EQ(report["slam"]["scans"], 150);
+  EXPECT_GT(report["slam"]["nodes"].get<int>(), 0);
+  EXPECT_GT(report["timing"]["realtime_factor"].get<double>(), 0.0);
+  EXPECT_GT(report["timing"]["data_duration_s"].get<double>(), 20.0);
+  EXPECT_FALSE(report.contains("relations"));
+}
+
+TEST(CliSlam, BadLogIsAnInputErrorAndWritesNothing) {
+  TempDir dir;
+  support::write_bytes(dir / "bad.clf", "FLASER 3 1.0 2.0\n");
+  const auto out = dir.path() / "out";
+  const support::CliRun run =
+      run_cli("slam --log " + (dir / "bad.clf").string() + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("bad.clf:1:"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Relations that the log's stamps do not reach are an input error, found before anything is
+// written.
+TEST(CliSlam, RelationsOutsideTheLogAreAnInputErrorAndWriteNothing) {
+  TESSERA_REQUIRE_DATA(support::data_path("laser/intel/intel-raw-first5505-sot.clf"));
+  TempDir dir;
+  const auto log = intel_slice(dir, 40);
+  support::write_bytes(dir / "r.relations", "5000 5001 0.1 0 0 0 0 0\n");
+  const auto out = dir.path() / "out";
+  const support::CliRun run = run_cli("slam --quiet --log " + log.string() + " --relations " +
+                                      (dir / "r.relations").string() + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace tessera

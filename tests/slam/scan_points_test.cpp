@@ -1,0 +1,88 @@
+#include "tessera/slam/scan_points.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace tessera::slam {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+RangeScan four_beams(std::vector<double> ranges) {
+  RangeScan scan;
+  scan.angle_min_rad = 0.0;
+  scan.angle_increment_rad = kPi / 2.0;
+  scan.min_range_m = 0.05;
+  scan.max_range_m = 10.0;
+  scan.ranges_m = std::move(ranges);
+  return scan;
+}
+
+// Beam 0 along x, beam 1 along y; the mounting pose moves and turns every point.
+TEST(ScanToPoints, ReturnsLandInTheRobotFrameThroughTheMounting) {
+  ScanPointsOptions o;
+  o.missing_ray_length_m = 0.0;
+  const ScanPoints p = scan_to_points(four_beams({1.0, 2.0, 3.0, 4.0}), {0.5, 0.0, kPi / 2.0}, o);
+  ASSERT_EQ(p.returns_m.size(), 4u);
+  EXPECT_NEAR(p.origin_m.x, 0.5, 1e-12);
+  EXPECT_NEAR(p.returns_m[0].x, 0.5, 1e-12);  // beam 0 points along the robot's y
+  EXPECT_NEAR(p.returns_m[0].y, 1.0, 1e-12);
+  EXPECT_NEAR(p.returns_m[1].x, 0.5 - 2.0, 1e-12);
+  EXPECT_NEAR(p.returns_m[1].y, 0.0, 1e-12);
+}
+
+// No-return readings and returns beyond max_range_m become free-space rays of the missing-ray
+// length; NaN and too-short readings are dropped.
+TEST(ScanToPoints, NoReturnBecomesAFreeSpaceRayAndBadReadingsAreDropped) {
+  ScanPointsOptions o;
+  o.max_range_m = 5.0;
+  o.missing_ray_length_m = 3.0;
+  const ScanPoints p = scan_to_points(
+      four_beams({10.0, 6.0, std::numeric_limits<double>::quiet_NaN(), 0.01}), {}, o);
+  EXPECT_TRUE(p.returns_m.empty());
+  ASSERT_EQ(p.misses_m.size(), 2u);
+  EXPECT_NEAR(p.misses_m[0].x, 3.0, 1e-12);
+  EXPECT_NEAR(p.misses_m[1].y, 3.0, 1e-12);
+  o.missing_ray_length_m = 0.0;
+  EXPECT_TRUE(scan_to_points(four_beams({10.0, 6.0, 1.0, 1.0}), {}, o).misses_m.empty());
+}
+
+TEST(VoxelFilter, KeepsTheFirstPointOfEachVoxelInInputOrder) {
+  const std::vector<Vec2> points{
+      {0.01, 0.01}, {0.02, 0.02}, {0.3, 0.0}, {-0.01, 0.0}, {0.31, 0.01}};
+  const std::vector<Vec2> kept = voxel_filter(points, 0.1);
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(kept[0], points[0]);
+  EXPECT_EQ(kept[1], points[2]);
+  EXPECT_EQ(kept[2], points[3]);  // x < 0 is its own voxel (floor, not truncation)
+  EXPECT_EQ(voxel_filter(points, 0.0).size(), points.size());
+}
+
+TEST(AdaptiveVoxelFilter, KeepsAtLeastMinPointsWhenItCan) {
+  std::vector<Vec2> line;
+  for (int i = 0; i < 1000; ++i) line.push_back({0.001 * i, 0.0});  // 1 m of dense points
+  AdaptiveVoxelFilterOptions o;
+  o.max_length_m = 0.5;
+  o.min_num_points = 100;
+  const std::vector<Vec2> kept = adaptive_voxel_filter(line, o);
+  EXPECT_GE(kept.size(), 100u);
+  EXPECT_LT(kept.size(), 250u);  // close to the target, not the whole input
+  o.min_num_points = 2000;       // more than there are: everything in range stays
+  EXPECT_EQ(adaptive_voxel_filter(line, o).size(), line.size());
+  o.max_range_m = 0.5;
+  EXPECT_EQ(adaptive_voxel_filter(line, o).size(), 501u);
+}
+
+TEST(ScanPointsOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
+  EXPECT_FALSE(validate(ScanPointsOptions{}).has_value());
+  ScanPointsOptions o;
+  o.max_range_m = 0.0;
+  EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("max_range_m"));
+}
+
+}  // namespace
+}  // namespace tessera::slam

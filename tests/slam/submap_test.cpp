@@ -1,0 +1,62 @@
+#include "tessera/slam/submap.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace tessera::slam {
+namespace {
+
+ScanPoints one_return() {
+  ScanPoints p;
+  p.returns_m.push_back({1.0, 0.0});
+  return p;
+}
+
+// Cartographer's window: a new submap every N scans, each scan into the (at most) two active
+// ones, the older finished after 2N scans; matching uses the older one.
+TEST(ActiveSubmaps, EveryScanGoesIntoTwoSubmapsAndEachFinishesAfterTwiceN) {
+  SubmapOptions o;
+  o.scans_per_submap = 3;
+  o.initial_size_m = 4.0;
+  ActiveSubmaps submaps(o);
+  EXPECT_FALSE(submaps.matching_id().has_value());
+  std::vector<int> finished_at;
+  for (int scan = 0; scan < 12; ++scan) {
+    const ActiveSubmaps::Insertion ins = submaps.insert(one_return(), {0.1 * scan, 0.0, 0.0});
+    if (scan == 0) {
+      EXPECT_EQ(ins.inserted_into, (std::vector<int>{0}));
+    }
+    if (scan >= 3) {
+      EXPECT_EQ(ins.inserted_into.size(), 2u) << "scan " << scan;
+    }
+    if (ins.finished) finished_at.push_back(scan);
+  }
+  EXPECT_EQ(finished_at, (std::vector<int>{5, 8, 11}));
+  EXPECT_EQ(submaps.size(), 4);
+  EXPECT_EQ(submaps.submap(0).num_scans(), 6);
+  EXPECT_TRUE(submaps.submap(0).finished());
+  EXPECT_EQ(submaps.active_ids(), (std::vector<int>{2, 3}));
+  EXPECT_EQ(submaps.matching_id(), 2);
+  // A submap's frame sits at the position of the scan that started it, heading 0.
+  EXPECT_NEAR(submaps.submap(1).local_pose().x, 0.3, 1e-12);
+  EXPECT_EQ(submaps.submap(1).local_pose().theta, 0.0);
+}
+
+TEST(Submap, GridIsInTheSubmapFrame) {
+  SubmapOptions o;
+  Submap submap({5.0, 2.0, 0.0}, o);
+  submap.insert(one_return(), {5.0, 2.0, 0.0}, RangeInserter(o.insert));
+  const GridGeometry& g = submap.grid().geometry();
+  EXPECT_GT(submap.grid().probability(g.cell_at_unchecked({1.0, 0.0})), 0.5);
+  EXPECT_EQ(submap.num_scans(), 1);
+}
+
+TEST(SubmapOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
+  EXPECT_FALSE(validate(SubmapOptions{}).has_value());
+  SubmapOptions o;
+  o.scans_per_submap = 0;
+  EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("scans_per_submap"));
+}
+
+}  // namespace
+}  // namespace tessera::slam

@@ -27,11 +27,12 @@ class MotionFilter {
   /// is kept, and it becomes the last kept one. The first pose is always kept. Stamps may go
   /// backwards (real logs jitter); the time test uses |t_s - last|.
   [[nodiscard]] bool is_similar(double t_s, const Pose2& pose) {
-    if (last_ && std::abs(t_s - last_t_s_) <= options_.max_time_s &&
-        std::hypot(pose.x - last_->x, pose.y - last_->y) <= options_.max_distance_m &&
-        std::abs(normalize_angle(pose.theta - last_->theta)) <= options_.max_angle_rad) {
+    if (has_last_ && std::abs(t_s - last_t_s_) <= options_.max_time_s &&
+        std::hypot(pose.x - last_.x, pose.y - last_.y) <= options_.max_distance_m &&
+        std::abs(normalize_angle(pose.theta - last_.theta)) <= options_.max_angle_rad) {
       return true;
     }
+    has_last_ = true;
     last_ = pose;
     last_t_s_ = t_s;
     return false;
@@ -39,7 +40,10 @@ class MotionFilter {
 
  private:
   MotionFilterOptions options_;
-  std::optional<Pose2> last_;
+  // A flag and a plain pose rather than std::optional<Pose2>: GCC 12 under ASan reports the
+  // optional's payload as maybe-uninitialized (a false positive that -Werror turns into a failure).
+  bool has_last_ = false;
+  Pose2 last_;
   double last_t_s_ = 0.0;
 };
 

@@ -37,7 +37,8 @@ bool solid(GridCell c) {
 }
 
 // The whole memory of the explorer: the 4-bit map, which the map-aware search also uses in place
-// (decision 0004), and the 1-bit final map. Neither variant needs scratch.
+// (decision 0004), and the 1-bit final map, which the explorer keeps current while mapping and
+// which also holds the obstacles seen inside visited cells (decision 0008). No scratch.
 std::uint8_t g_map[PackedMap::bytes_needed(kWidth, kHeight)];
 std::uint8_t g_final_map[FinalMap::bytes_needed(kWidth, kHeight)];
 #if BOB_FIRMWARE_MAP_AWARE
@@ -65,7 +66,8 @@ volatile const std::uint8_t* bob_final_map;
 namespace {
 
 void run_explorer() {
-  Status s = g_explorer.init(kOptions, g_map, sizeof(g_map), kWidth, kHeight);
+  Status s = g_explorer.init(kOptions, g_map, sizeof(g_map), g_final_map, sizeof(g_final_map),
+                             kWidth, kHeight);
   if (s == Status::kOk) {
     sense_around(kStart);
     s = g_explorer.start(kStart, Direction::kNorth);
@@ -78,7 +80,6 @@ void run_explorer() {
     at = tessera::bob::step(at, move);  // a robot drives one cell here, sampling its sensors
     sense_around(at);
   }
-  if (s == Status::kFinished) s = g_explorer.write_final_map(g_final_map, sizeof(g_final_map));
   bob_result[0] = static_cast<std::uint32_t>(s);
   bob_result[1] = g_explorer.moves();
   bob_result[2] = g_explorer.turns();

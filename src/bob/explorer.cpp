@@ -49,43 +49,52 @@ void clear_marks(PackedMap& map) {
 }  // namespace
 
 Status Explorer::init(const ExplorerOptions& options, std::uint8_t* map_buffer,
-                      std::size_t map_buffer_bytes, int width_cells, int height_cells,
-                      std::uint8_t* /*scratch*/, std::size_t /*scratch_buffer_bytes*/) {
+                      std::size_t map_buffer_bytes, std::uint8_t* final_map_buffer,
+                      std::size_t final_map_buffer_bytes, int width_cells, int height_cells) {
   *this = Explorer{};
-  const Status s = map_.init(map_buffer, map_buffer_bytes, width_cells, height_cells);
-  if (s != Status::kOk) return s;
+  Status s = map_.init(map_buffer, map_buffer_bytes, width_cells, height_cells);
+  if (s == Status::kOk) {
+    s = final_map_.init(final_map_buffer, final_map_buffer_bytes, width_cells, height_cells);
+  }
+  if (s != Status::kOk) {
+    map_ = PackedMap{};
+    return s;
+  }
+  (void)final_map_.assign_from(map_);  // every cell unsensed: 1
   options_ = options;
   unsensed_ = map_.cell_count();
   initialised_ = true;
   return Status::kOk;
 }
 
-void Explorer::mark_sensed(GridCell c, CellState s) {
-  if (map_.state(c) == CellState::kUnsensed) --unsensed_;
+void Explorer::set_sensed(GridCell c, CellState s) {
   map_.set_state(c, s);
+  final_map_.set_occupied(c, s != CellState::kFree);
 }
 
 Status Explorer::sense(GridCell c, bool occupied) {
   if (!initialised_) return Status::kNotStarted;
   if (!map_.contains(c)) return Status::kOutOfBounds;
+  const CellState reading = occupied ? CellState::kOccupied : CellState::kFree;
   switch (map_.state(c)) {
     case CellState::kUnsensed:
-      mark_sensed(c, occupied ? CellState::kOccupied : CellState::kFree);
+      --unsensed_;
+      set_sensed(c, reading);
       break;
     case CellState::kFree:  // section 3.4: a later reading changes a sensed cell
-      if (occupied) {
-        map_.set_state(c, CellState::kOccupied);
-        ++resensed_;
-      }
-      break;
     case CellState::kOccupied:
-      if (!occupied) {
-        map_.set_state(c, CellState::kFree);
+      if (map_.state(c) != reading) {
+        set_sensed(c, reading);
         ++resensed_;
       }
       break;
-    case CellState::kVisited:  // section 3.4: the robot passed through it without collision
-      if (occupied) ++discarded_;
+    case CellState::kVisited:
+      // Section 3.4: a cell the robot stood in never becomes occupied, so the explorer may still
+      // drive through it; the obstacle inside it goes into the final map (decision 0008).
+      if (occupied) {
+        ++discarded_;
+        final_map_.set_occupied(c, true);
+      }
       break;
   }
   return Status::kOk;
@@ -101,9 +110,15 @@ Status Explorer::start(GridCell cell, Direction heading) {
   if (!map_.contains(front) || map_.state(front) == CellState::kOccupied) {
     return Status::kFrontBlocked;
   }
-  if (map_.state(cell) == CellState::kUnsensed) --unsensed_;
+  const CellState before = map_.state(cell);
+  if (before == CellState::kUnsensed) --unsensed_;
   map_.set_visited(cell, recorded(heading));
-  if (map_.state(front) == CellState::kUnsensed) mark_sensed(front, CellState::kFree);
+  // A detection inside the start cell before the start is an obstacle inside a visited cell.
+  final_map_.set_occupied(cell, before == CellState::kOccupied);
+  if (map_.state(front) == CellState::kUnsensed) {
+    --unsensed_;
+    set_sensed(front, CellState::kFree);
+  }
   start_ = position_ = cell;
   heading_ = heading;
   started_ = true;
@@ -185,6 +200,7 @@ void Explorer::commit_move(Direction dir) {
   ++moves_;
   if (position_ == start_) start_reentered_ = true;
   // BOBMapping Code 1 line 11, MarkTrack: the first arrival stores the move that reached the cell.
+  // Only known-free cells are entered, so its final-map bit is 0 already.
   if (map_.state(position_) != CellState::kVisited) map_.set_visited(position_, recorded(dir));
 }
 
@@ -219,7 +235,11 @@ Status Explorer::next_move(Direction& move) {
 
 Status Explorer::blocked() {
   if (!started_ || (undo_ & kUndoPossible) == 0) return Status::kNotStarted;
-  if ((undo_ & kUndoTargetWasVisited) == 0) map_.set_state(position_, CellState::kOccupied);
+  if ((undo_ & kUndoTargetWasVisited) == 0) {
+    set_sensed(position_, CellState::kOccupied);
+  } else {
+    final_map_.set_occupied(position_, true);  // stays visited; the obstacle is in the final map
+  }
   start_reentered_ = (undo_ & kUndoStartWasReentered) != 0;
   position_ = step(position_, opposite(heading_));
   --moves_;
@@ -231,10 +251,11 @@ Status Explorer::blocked() {
 
 Status Explorer::write_final_map(std::uint8_t* buffer, std::size_t buffer_bytes) const {
   if (!initialised_) return Status::kNotStarted;
-  FinalMap final_map;
-  const Status s = final_map.init(buffer, buffer_bytes, map_.width(), map_.height());
-  if (s != Status::kOk) return s;
-  return final_map.assign_from(map_);
+  const std::size_t bytes = final_map_.memory_bytes();
+  if (buffer == nullptr || buffer_bytes < bytes) return Status::kBufferTooSmall;
+  const std::uint8_t* from = final_map_.data();
+  for (std::size_t i = 0; i < bytes; ++i) buffer[i] = from[i];
+  return Status::kOk;
 }
 
 }  // namespace tessera::bob

@@ -96,9 +96,9 @@ struct ExplorationRun {
   std::vector<GridCell> path;         // cells entered, in order
   bool hit_wall = false;              // a move into a solid cell (must never happen)
   std::vector<std::uint8_t> mapping;  // the packed 4-bit map at the end
-  std::vector<std::uint8_t> final_map;
-  Explorer explorer;  // holds a pointer into `mapping`: valid while this ExplorationRun lives, not
-                      // copied
+  std::vector<std::uint8_t> final_map;  // the explorer's final-map buffer
+  Explorer explorer;  // holds pointers into `mapping` and `final_map`: valid while this
+                      // ExplorationRun lives, not copied
 };
 
 /// Runs the explorer to the end (or `max_moves`). The ExplorationRun owns every buffer.
@@ -107,9 +107,10 @@ inline void explore(const TextGrid& world, Direction heading, Backtrack backtrac
   const int w = world.width();
   const int h = world.height();
   run.mapping.assign(PackedMap::bytes_needed(w, h), 0);
+  run.final_map.assign(FinalMap::bytes_needed(w, h), 0xFF);
   Explorer& ex = run.explorer;
-  run.start_status =
-      ex.init(ExplorerOptions{backtrack}, run.mapping.data(), run.mapping.size(), w, h);
+  run.start_status = ex.init(ExplorerOptions{backtrack}, run.mapping.data(), run.mapping.size(),
+                             run.final_map.data(), run.final_map.size(), w, h);
   if (run.start_status != Status::kOk) return;
   GridCell pos = world.find('R');
   sense_exact(ex, world, pos, heading, layout);
@@ -127,8 +128,6 @@ inline void explore(const TextGrid& world, Direction heading, Backtrack backtrac
   }
   run.stop_reason = ex.stop_reason();
   run.turns = ex.turns();
-  run.final_map.assign(FinalMap::bytes_needed(w, h), 0xFF);
-  (void)ex.write_final_map(run.final_map.data(), run.final_map.size());
 }
 
 }  // namespace tessera::bob::bobtest

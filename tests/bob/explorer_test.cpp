@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -19,9 +20,10 @@ using bobtest::TextGrid;
 class Knowledge {
  public:
   Knowledge(const TextGrid& drawn, Direction heading, Backtrack backtrack = Backtrack::kTrail)
-      : map_(PackedMap::bytes_needed(drawn.width(), drawn.height())) {
-    EXPECT_EQ(explorer_.init(ExplorerOptions{backtrack}, map_.data(), map_.size(), drawn.width(),
-                             drawn.height()),
+      : map_(PackedMap::bytes_needed(drawn.width(), drawn.height())),
+        final_(FinalMap::bytes_needed(drawn.width(), drawn.height())) {
+    EXPECT_EQ(explorer_.init(ExplorerOptions{backtrack}, map_.data(), map_.size(), final_.data(),
+                             final_.size(), drawn.width(), drawn.height()),
               Status::kOk);
     for (int y = 0; y < drawn.height(); ++y) {
       for (int x = 0; x < drawn.width(); ++x) {
@@ -37,6 +39,7 @@ class Knowledge {
 
  private:
   std::vector<std::uint8_t> map_;
+  std::vector<std::uint8_t> final_;
   Explorer explorer_;
 };
 
@@ -196,8 +199,10 @@ TEST(Explorer, StartingFacingAWallIsRefusedWithFrontBlocked) {
       "#####",
   });
   std::vector<std::uint8_t> map(PackedMap::bytes_needed(5, 3));
+  std::vector<std::uint8_t> final_map(FinalMap::bytes_needed(5, 3));
   Explorer ex;
-  ASSERT_EQ(ex.init({}, map.data(), map.size(), 5, 3), Status::kOk);
+  ASSERT_EQ(ex.init({}, map.data(), map.size(), final_map.data(), final_map.size(), 5, 3),
+            Status::kOk);
   bobtest::sense_exact(ex, world, {3, 1}, Direction::kEast, bobtest::SensorLayout::kFourNeighbors);
   EXPECT_EQ(ex.start({3, 1}, Direction::kEast), Status::kFrontBlocked);
   EXPECT_FALSE(ex.started());
@@ -215,30 +220,51 @@ TEST(Explorer, StartOutsideTheGridOrBeforeInitIsAnError) {
   EXPECT_EQ(ex.start({0, 0}, Direction::kNorth), Status::kNotStarted);
   EXPECT_EQ(ex.sense({0, 0}, true), Status::kNotStarted);
   std::vector<std::uint8_t> map(PackedMap::bytes_needed(3, 3));
-  ASSERT_EQ(ex.init({}, map.data(), map.size(), 3, 3), Status::kOk);
+  std::vector<std::uint8_t> final_map(FinalMap::bytes_needed(3, 3));
+  ASSERT_EQ(ex.init({}, map.data(), map.size(), final_map.data(), final_map.size(), 3, 3),
+            Status::kOk);
   EXPECT_EQ(ex.start({3, 0}, Direction::kWest), Status::kOutOfBounds);
   EXPECT_EQ(ex.sense({-1, 0}, true), Status::kOutOfBounds);
 }
 
-// Decision 0004: the map-aware search runs in the map's direction bits, so neither variant needs
-// scratch memory; a scratch buffer passed by an older caller is ignored.
-TEST(Explorer, MapAwareVariantNeedsNoScratchBuffer) {
-  EXPECT_EQ(Explorer::scratch_bytes(11, 14), 0u);
-  std::vector<std::uint8_t> map(PackedMap::bytes_needed(11, 14));
-  Explorer ex;
-  const ExplorerOptions options{Backtrack::kShortestKnownPath};
-  EXPECT_EQ(ex.init(options, map.data(), map.size(), 11, 14), Status::kOk);
-  std::uint8_t unused[4] = {};
-  EXPECT_EQ(ex.init(options, map.data(), map.size(), 11, 14, unused, sizeof unused), Status::kOk);
-  EXPECT_EQ(ex.init(options, map.data(), map.size() - 1, 11, 14), Status::kBufferTooSmall);
+// The mapping memory for the paper's 11 x 14 grid: the 4-bit map (84 bytes) and the final map,
+// which also holds the fifth bit of visited cells (28 bytes, decision 0008); nothing else for
+// either variant (the map-aware search runs in the map's direction bits, decision 0004).
+TEST(Explorer, MappingMemoryForElevenByFourteenIsTheFourBitMapPlusTheFinalMap) {
+  EXPECT_EQ(Explorer::memory_bytes(11, 14), 112u);
+  for (const Backtrack backtrack : {Backtrack::kTrail, Backtrack::kShortestKnownPath}) {
+    std::vector<std::uint8_t> map(PackedMap::bytes_needed(11, 14));
+    std::vector<std::uint8_t> final_map(FinalMap::bytes_needed(11, 14), 0);
+    ASSERT_EQ(map.size() + final_map.size(), 112u);
+    Explorer ex;
+    const ExplorerOptions options{backtrack};
+    EXPECT_EQ(ex.init(options, map.data(), map.size(), final_map.data(), final_map.size(), 11, 14),
+              Status::kOk);
+    // Every cell starts unsensed, 1 in the final map; the 5 padding bits of each row stay 0.
+    for (std::size_t row = 0; row < 14; ++row) {
+      EXPECT_EQ(final_map[2 * row], 0xFF);
+      EXPECT_EQ(final_map[2 * row + 1], 0x07);
+    }
+    EXPECT_EQ(ex.init(options, map.data(), map.size() - 1, final_map.data(), final_map.size(), 11,
+                      14),
+              Status::kBufferTooSmall);
+    EXPECT_EQ(ex.init(options, map.data(), map.size(), final_map.data(), final_map.size() - 1, 11,
+                      14),
+              Status::kBufferTooSmall);
+    EXPECT_EQ(ex.init(options, map.data(), map.size(), nullptr, 0, 11, 14),
+              Status::kBufferTooSmall);
+    EXPECT_EQ(ex.sense({0, 0}, false), Status::kNotStarted);  // unusable after a failed init
+  }
 }
 
 // Section 3.4 re-sensing: a later reading changes a sensed cell, except that a visited cell never
 // becomes occupied.
 TEST(Explorer, ReSensingChangesSensedCellsButNeverMakesAVisitedCellOccupied) {
   std::vector<std::uint8_t> map(PackedMap::bytes_needed(3, 3));
+  std::vector<std::uint8_t> final_map(FinalMap::bytes_needed(3, 3));
   Explorer ex;
-  ASSERT_EQ(ex.init({}, map.data(), map.size(), 3, 3), Status::kOk);
+  ASSERT_EQ(ex.init({}, map.data(), map.size(), final_map.data(), final_map.size(), 3, 3),
+            Status::kOk);
   EXPECT_EQ(ex.unsensed_cells(), 9);
   ASSERT_EQ(ex.sense({1, 2}, true), Status::kOk);
   EXPECT_EQ(ex.unsensed_cells(), 8);
@@ -252,11 +278,21 @@ TEST(Explorer, ReSensingChangesSensedCellsButNeverMakesAVisitedCellOccupied) {
   Direction d = Direction::kNorth;
   ASSERT_EQ(ex.next_move(d), Status::kOk);  // into (1, 1): it has unsensed neighbours
   ASSERT_EQ(d, Direction::kNorth);
-  ASSERT_EQ(ex.sense({1, 1}, true), Status::kOk);  // stood in: the reading is discarded
+  ASSERT_EQ(ex.sense({1, 1}, true), Status::kOk);  // stood in: stays visited
   ASSERT_EQ(ex.sense({1, 0}, true), Status::kOk);  // the start cell too
   EXPECT_EQ(ex.map().state({1, 1}), CellState::kVisited);
   EXPECT_EQ(ex.map().state({1, 0}), CellState::kVisited);
   EXPECT_EQ(ex.discarded_readings(), 2u);
+  EXPECT_EQ(ex.resensed(), 2u);
+  // ... but the final map keeps the obstacles (decision 0008), and a later "free" reading does not
+  // clear them.
+  ASSERT_EQ(ex.sense({1, 1}, false), Status::kOk);
+  EXPECT_TRUE(ex.obstacle_in_visited({1, 1}));
+  EXPECT_TRUE(ex.obstacle_in_visited({1, 0}));
+  EXPECT_TRUE(ex.final_map().occupied({1, 1}));
+  EXPECT_TRUE(ex.final_map().occupied({1, 0}));
+  EXPECT_TRUE(ex.final_map().occupied({1, 2}));   // sensed occupied
+  EXPECT_TRUE(ex.final_map().occupied({0, 0}));   // unsensed
   EXPECT_EQ(ex.resensed(), 2u);
 }
 
@@ -383,6 +419,50 @@ TEST(Explorer, ABlockedMoveIntoAVisitedCellKeepsItVisited) {
   EXPECT_EQ(ex.blocked(), Status::kOk);
   EXPECT_EQ(ex.position(), (GridCell{3, 1}));
   EXPECT_EQ(ex.map().state({2, 1}), CellState::kVisited);
+  // The body met something on the way into it: an obstacle inside a visited cell, kept in the
+  // final map (decision 0008), while the explorer still sends the robot back through it.
+  EXPECT_TRUE(ex.obstacle_in_visited({2, 1}));
+  EXPECT_TRUE(ex.final_map().occupied({2, 1}));
+  EXPECT_EQ(next(ex), Direction::kWest);
+}
+
+// Decision 0008: a reading inside a cell the robot stood in (the body passed an obstacle 3-4 cm
+// inside the cell's edge) makes the cell occupied in the final map -- what the user gets -- while
+// the explorer's navigation is unchanged: the cell stays visited and the trail backtracks
+// through it to the start. A cell visited without a detection stays 0.
+TEST(Explorer, VisitedCellWithADetectionIsOccupiedInTheFinalMapAndStillTraversable) {
+  for (const Backtrack backtrack : {Backtrack::kTrail, Backtrack::kShortestKnownPath}) {
+    SCOPED_TRACE(backtrack == Backtrack::kTrail ? "trail" : "map-aware");
+    Knowledge k(TextGrid({
+                    "#####",
+                    "?.R.?",
+                    "#####",
+                }),
+                Direction::kEast, backtrack);
+    Explorer& ex = k.explorer();
+    EXPECT_EQ(next(ex), Direction::kEast);  // into (3, 1)
+    ASSERT_EQ(ex.sense({4, 1}, true), Status::kOk);
+    ASSERT_EQ(ex.sense({3, 1}, true), Status::kOk);  // a reading inside the cell it stands in
+    EXPECT_EQ(ex.map().state({3, 1}), CellState::kVisited);
+    EXPECT_TRUE(ex.obstacle_in_visited({3, 1}));
+    EXPECT_FALSE(ex.obstacle_in_visited({2, 1}));
+    EXPECT_EQ(next(ex), Direction::kWest);  // back through the start to (1, 1), next to a '?'
+    EXPECT_EQ(next(ex), Direction::kWest);
+    ASSERT_EQ(ex.sense({0, 1}, true), Status::kOk);  // the last unsensed cell
+    Direction d = Direction::kNorth;
+    EXPECT_EQ(ex.next_move(d), Status::kFinished);
+    const FinalMap& final_map = ex.final_map();
+    EXPECT_TRUE(final_map.occupied({3, 1}));
+    EXPECT_FALSE(final_map.occupied({2, 1}));
+    EXPECT_FALSE(final_map.occupied({1, 1}));
+    EXPECT_TRUE(final_map.occupied({4, 1}));
+    EXPECT_TRUE(final_map.occupied({0, 1}));
+    // write_final_map() hands out the same map.
+    std::vector<std::uint8_t> copy(FinalMap::bytes_needed(5, 3), 0xAA);
+    ASSERT_EQ(ex.write_final_map(copy.data(), copy.size()), Status::kOk);
+    EXPECT_TRUE(std::equal(copy.begin(), copy.end(), final_map.data()));
+    EXPECT_EQ(ex.write_final_map(copy.data(), copy.size() - 1), Status::kBufferTooSmall);
+  }
 }
 
 }  // namespace tessera::bob

@@ -49,7 +49,19 @@ enum class StopReason : std::uint8_t {
 /// (once only, so a sensor that never reports that neighbour cannot trap the robot).
 ///
 /// Re-sensing (section 3.4): a later reading overrides an earlier one, except that a reading of
-/// "occupied" in a visited cell is discarded (the robot passed through it without collision).
+/// "occupied" in a visited cell does not make it occupied: the robot has stood there, so the cell
+/// stays traversable for the explorer (backtracking goes through it). Such a reading, and a bump
+/// on the way into a visited cell (blocked()), are kept in the final map instead, which marks the
+/// cell 1, "not fully free": a body that fits in the cell with 3 cm to spare can stand beside an
+/// obstacle that lies inside it (decision 0008). Once recorded, it stays (errors fall on the safe
+/// side, as section 3.2 wants): later "free" readings of the cell do not clear it.
+///
+/// The final map (section 3.4, 1 bit per cell, FinalMap) is kept current while mapping, in a
+/// second caller buffer: bit 1 for an unsensed cell, a cell sensed occupied, and a visited cell
+/// with an obstacle recorded inside; 0 for the rest. For a visited cell it is the only record of
+/// such an obstacle (the fifth bit of the cell, which the 4-bit layout has no room for), so the
+/// mapping memory is PackedMap::bytes_needed + FinalMap::bytes_needed (memory_bytes(): 84 + 28 =
+/// 112 bytes for 11 x 14), and the final map costs nothing more at the end.
 ///
 /// Protocol: init(); sense() what the sensors see at the start pose; start(); then loop
 /// { next_move(); move the robot; sense() on the way } until next_move() returns kFinished.
@@ -62,29 +74,31 @@ enum class StopReason : std::uint8_t {
 ///
 /// Cost: sense() is O(1); next_move() is O(1) with kTrail and when a neighbour qualifies, and
 /// O(cells x (K + 1)) when kShortestKnownPath backtracks, K the distance to the nearest target.
-/// Memory: the packed map (PackedMap::bytes_needed) for either variant.
+/// Memory: the packed map and the final map (memory_bytes()) for either variant; no scratch.
 class Explorer {
  public:
-  /// Scratch the explorer needs besides the map: none for either variant (the map-aware search
-  /// used a queue here until decision 0004). Kept so that callers sized by it still compile.
-  [[nodiscard]] static constexpr std::size_t scratch_bytes(int /*width_cells*/,
-                                                           int /*height_cells*/) {
-    return 0;
+  /// Bytes of the two caller buffers together: PackedMap::bytes_needed (the 4-bit mapping
+  /// layout) + FinalMap::bytes_needed (the final map, which also holds the fifth bit of visited
+  /// cells). 11 x 14 -> 84 + 28 = 112.
+  [[nodiscard]] static constexpr std::size_t memory_bytes(int width_cells, int height_cells) {
+    return PackedMap::bytes_needed(width_cells, height_cells) +
+           FinalMap::bytes_needed(width_cells, height_cells);
   }
 
   constexpr Explorer() = default;
 
-  /// Sets up a width x height grid of unsensed cells in `map_buffer`
-  /// (PackedMap::bytes_needed bytes). `scratch` and `scratch_buffer_bytes` are ignored (see
-  /// scratch_bytes(); they may be null and 0). kBadSize, kBufferTooSmall on a bad map; the
-  /// explorer is then unusable.
+  /// Sets up a width x height grid of unsensed cells in `map_buffer` (PackedMap::bytes_needed
+  /// bytes) and its final map, every cell 1, in `final_map_buffer` (FinalMap::bytes_needed
+  /// bytes). The explorer uses both until it is initialised again. kBadSize, kBufferTooSmall on
+  /// a bad size or a short or null buffer; the explorer is then unusable.
   [[nodiscard]] Status init(const ExplorerOptions& options, std::uint8_t* map_buffer,
-                            std::size_t map_buffer_bytes, int width_cells, int height_cells,
-                            std::uint8_t* scratch = nullptr, std::size_t scratch_buffer_bytes = 0);
+                            std::size_t map_buffer_bytes, std::uint8_t* final_map_buffer,
+                            std::size_t final_map_buffer_bytes, int width_cells, int height_cells);
 
   /// Records a reading: `occupied` for any detection inside cell c. kOutOfBounds for a cell
   /// outside the grid (ignore it: the robot's sensors see past the grid's edge), kNotStarted
-  /// before init(). A reading of "occupied" in a visited cell is discarded (kOk).
+  /// before init(). A reading of "occupied" in a visited cell leaves the cell visited and marks
+  /// it 1 in the final map (kOk).
   Status sense(GridCell c, bool occupied);
 
   /// Places the robot in `cell` facing `heading` and marks the cell visited. Section 3.4 requires
@@ -104,6 +118,13 @@ class Explorer {
   [[nodiscard]] Direction heading() const { return heading_; }
   [[nodiscard]] const ExplorerOptions& options() const { return options_; }
   [[nodiscard]] const PackedMap& map() const { return map_; }
+  /// The final map as it stands (see above): valid from init() on, complete once finished().
+  [[nodiscard]] const FinalMap& final_map() const { return final_map_; }
+  /// True when c is a visited cell with an obstacle recorded inside it (a reading or a bump):
+  /// traversable for the explorer, 1 in the final map. Precondition: map().contains(c).
+  [[nodiscard]] bool obstacle_in_visited(GridCell c) const {
+    return map_.state(c) == CellState::kVisited && final_map_.occupied(c);
+  }
 
   /// One-cell moves so far (Table 1 "length path").
   [[nodiscard]] std::uint32_t moves() const { return moves_; }
@@ -113,7 +134,8 @@ class Explorer {
   [[nodiscard]] std::uint32_t quarter_turns() const { return quarter_turns_; }
   /// Readings that changed an already sensed cell (Table 1 "re-sensed cells", counted per change).
   [[nodiscard]] std::uint32_t resensed() const { return resensed_; }
-  /// "Occupied" readings discarded because the cell was visited.
+  /// "Occupied" readings of visited cells: kept out of the mapping state, recorded in the final
+  /// map only.
   [[nodiscard]] std::uint32_t discarded_readings() const { return discarded_; }
   /// Cells of the grid not sensed yet.
   [[nodiscard]] int unsensed_cells() const { return unsensed_; }
@@ -121,16 +143,18 @@ class Explorer {
   /// The move just returned by next_move() could not be made: the robot met an obstacle on the
   /// way (a bump or a stalled motor) and drove back to the cell it left. That cell becomes the
   /// position again and the cell it tried to enter is marked occupied -- unless the robot had
-  /// stood in it before (section 3.4: a visited cell never becomes occupied), when only the
-  /// position is restored. Not in the paper, whose robot has no bumper: without it a robot that
-  /// misread a cell drives into it. kNotStarted when there is no move to take back (before the
-  /// first move, or twice in a row). The move is not counted in moves().
+  /// stood in it before (section 3.4: a visited cell never becomes occupied), when it stays
+  /// visited and is marked 1 in the final map only (an obstacle inside it, decision 0008). Not in
+  /// the paper, whose robot has no bumper: without it a robot that misread a cell drives into it.
+  /// kNotStarted when there is no move to take back (before the first move, or twice in a row).
+  /// The move is not counted in moves().
   [[nodiscard]] Status blocked();
   /// Moves taken back with blocked().
   [[nodiscard]] std::uint32_t blocked_moves() const { return blocked_moves_; }
 
-  /// Writes the final 1-bit map (FinalMap layout) into `buffer`
-  /// (FinalMap::bytes_needed bytes). kBufferTooSmall, kNotStarted before init().
+  /// Copies the final 1-bit map (final_map(), FinalMap layout) into `buffer`
+  /// (FinalMap::bytes_needed bytes; the explorer's own final-map buffer is fine too).
+  /// kBufferTooSmall, kNotStarted before init().
   [[nodiscard]] Status write_final_map(std::uint8_t* buffer, std::size_t buffer_bytes) const;
 
  private:
@@ -146,10 +170,12 @@ class Explorer {
   /// kNorth (bits 0) with kShortestKnownPath, whose search owns those bits.
   [[nodiscard]] Direction recorded(Direction reached_by) const;
   void commit_move(Direction dir);
-  void mark_sensed(GridCell c, CellState s);
+  /// Sets c, not visited, to kFree or kOccupied, and its final-map bit to match.
+  void set_sensed(GridCell c, CellState s);
 
   ExplorerOptions options_{};
   PackedMap map_{};
+  FinalMap final_map_{};
   GridCell start_{};
   GridCell position_{};
   Direction heading_ = Direction::kNorth;

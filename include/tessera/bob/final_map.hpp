@@ -13,9 +13,11 @@
 
 namespace tessera::bob {
 
-/// A 1-bit-per-cell map over a caller buffer: bit 1 = not traversable (sensed occupied, or never
-/// sensed), 0 = known empty. Cell (x, y) is bit x % 8 (least significant first) of byte
-/// y * bytes_per_row() + x / 8; padding bits are zero. Same grid convention as PackedMap.
+/// A 1-bit-per-cell map over a caller buffer: bit 1 = not known to be wholly free (sensed
+/// occupied, never sensed, or -- in an Explorer's final map -- a cell the robot stood in with an
+/// obstacle detected inside it, decision 0008), 0 = known empty. Cell (x, y) is bit x % 8 (least
+/// significant first) of byte y * bytes_per_row() + x / 8; padding bits are zero. Same grid
+/// convention as PackedMap.
 class FinalMap {
  public:
   /// ceil(width / 8).
@@ -33,8 +35,10 @@ class FinalMap {
   /// PackedMap::init.
   [[nodiscard]] Status init(std::uint8_t* buffer, std::size_t buffer_bytes, int width_cells,
                             int height_cells);
-  /// Fills this map from the mapping layout: occupied or unsensed -> 1, free or visited -> 0.
-  /// kBadSize when the sizes differ.
+  /// Fills this map from the 4-bit mapping layout alone: occupied or unsensed -> 1, free or
+  /// visited -> 0. The layout has no room for an obstacle inside a visited cell, so this is not
+  /// an Explorer's final map (Explorer::final_map(), which keeps those). kBadSize when the sizes
+  /// differ.
   [[nodiscard]] Status assign_from(const PackedMap& mapping);
 
   [[nodiscard]] constexpr int width() const { return width_; }

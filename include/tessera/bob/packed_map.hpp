@@ -34,7 +34,9 @@ enum class CellState : std::uint8_t {
 ///      1      1      kOccupied   (direction ignored)
 ///      0      1      kVisited    (direction = the move that reached it; at the start cell it is
 ///                                 the start heading and is never used: backtracking ends there)
-/// A visited cell counts as sensed and empty everywhere (is_sensed, is_known_free, the final map).
+/// A visited cell counts as sensed and empty here (is_sensed, is_known_free, FinalMap::assign_from).
+/// An obstacle detected inside a visited cell has no bit in this layout: the Explorer records it
+/// in its final map (explorer.hpp, decision 0008).
 ///
 /// Only the paper's trail backtracking (Backtrack::kTrail) reads the direction of a visited cell.
 /// The map-aware explorer (Backtrack::kShortestKnownPath) stores none and uses the two bits of

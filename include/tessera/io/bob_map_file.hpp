@@ -9,8 +9,9 @@
 //   8       2     cell side in millimetres, unsigned little-endian (220 for 0.22 m)
 //   10      ...   height rows of ceil(width / 8) bytes each, cell row 0 (the lowest, y = 0)
 //                 first; cell (x, y) is bit x % 8 (least significant first) of byte
-//                 y * ceil(width / 8) + x / 8; 1 = not traversable (sensed occupied or never
-//                 sensed), 0 = known empty; padding bits are 0.
+//                 y * ceil(width / 8) + x / 8; 1 = not known to be wholly free (sensed
+//                 occupied, never sensed, or stood in with an obstacle detected inside it,
+//                 docs/decisions/0008), 0 = known empty; padding bits are 0.
 //
 // The file is exactly 10 + height * ceil(width / 8) bytes (an 11 x 14 map: 38 bytes).
 #include <cstdint>

@@ -1,6 +1,7 @@
 #pragma once
 // The monitor picture of BOBMapping Figure 5a for a simulated run (mission/bob_mission.hpp):
-// one square per cell, green = sensed empty, red = sensed occupied, yellow = not sensed, and an
+// one square per cell, green = sensed empty, red = occupied in the final map (sensed occupied, or
+// stood in with an obstacle detected inside, docs/decisions/0008), yellow = not sensed, and an
 // arrow for every move of the route (centre of a cell to centre of the next, shifted to the right
 // of the direction of travel so a backtrack shows as a second lane; the head in the cell reached).
 // Top image row = highest cell row (docs/conventions.md).

@@ -19,8 +19,9 @@
 //    repeats the step, sensing again; the readings of the rejected step are discarded.
 //  - Bumps: when the true body would touch a solid cell on the way, the move stops there, the
 //    robot backs to the cell it left and bob::Explorer::blocked() marks the target occupied. A
-//    cell it has stood in stays free, so after three bumps into one the robot squeezes through
-//    (counted in BobLocalisationStats::collisions).
+//    cell it has stood in stays traversable (marked occupied in the final map only, decision
+//    0008), so after three bumps into one the robot squeezes through (counted in
+//    BobLocalisationStats::collisions).
 //  - At the start the robot is placed by hand (belief = truth) centred in its cell, facing North,
 //    and senses the three cells around it as if it had just driven in from the cell behind (that
 //    cell is taken as free for this one sensing; nothing else changes).
@@ -86,8 +87,10 @@ struct BobTableRow {
   int cells = 0;         // cells in the configuration: every cell of the grid (W x H)
   int sensed_cells = 0;  // cells sensed at least once
   int resensed = 0;      // readings that changed an already sensed cell
-  // Errors over sensed cells, scored with a don't-care band of boundary_tolerance_m either side
-  // of each cell edge (the robot knows its grid only to its localisation error):
+  // Errors over sensed cells of the final map (BobResult::final_map: a visited cell with an
+  // obstacle detected inside counts as occupied), scored with a don't-care band of
+  // boundary_tolerance_m either side of each cell edge (the robot knows its grid only to its
+  // localisation error):
   int empty_as_occupied = 0;  // map occupied, but nothing solid even in the cell grown by the band
   int occupied_as_empty = 0;  // map free, but something solid in the cell shrunk by the band
   double success_rate = 0.0;  // (cells - both errors) / cells, as the paper computes it
@@ -124,7 +127,9 @@ struct BobResult {
   std::vector<Cell> route;  // cells the robot stood in, start first, one per move
   int width = 0;            // the robot's grid
   int height = 0;
-  std::vector<std::uint8_t> final_map;  // bob::FinalMap layout: 1 = occupied or unsensed
+  /// bob::FinalMap layout: 1 = occupied, unsensed, or stood in with an obstacle detected inside
+  /// (decision 0008). The Table 1 errors are counted on this map.
+  std::vector<std::uint8_t> final_map;
   std::vector<std::uint8_t> sensed;     // one byte per cell, row-major: 1 = sensed
   BobTableRow row;
   BobLocalisationStats localisation;

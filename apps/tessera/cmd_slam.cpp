@@ -1,6 +1,7 @@
-// tessera slam: laser SLAM on a 2D laser log (slam/laser_slam.hpp). Thin glue: read the log (and
-// the relations, if any) first, so that bad input writes nothing; run; write map, trajectory,
-// graph and report.json; print one summary line.
+// tessera slam: laser SLAM (slam/laser_slam.hpp) on a 2D laser log, or on a simulated run in a
+// world (sim/laser_run.hpp) that is then scored against its ground truth (ATE of SLAM and of
+// odometry alone, map accuracy). Thin glue: read or simulate the input first, so that bad input
+// writes nothing; run; write map, trajectory, graph and report.json; print one summary line.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,7 +12,10 @@
 
 #include "commands.hpp"
 #include "tessera/core/angle.hpp"
+#include "tessera/eval/map_accuracy.hpp"
 #include "tessera/eval/relation_metric.hpp"
+#include "tessera/eval/stamped_pose3.hpp"
+#include "tessera/eval/trajectory_error.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/carmen_log.hpp"
 #include "tessera/io/eval_report.hpp"
@@ -21,6 +25,7 @@
 #include "tessera/io/relations_file.hpp"
 #include "tessera/io/render.hpp"
 #include "tessera/io/tum_trajectory.hpp"
+#include "tessera/sim/laser_run.hpp"
 #include "tessera/slam/laser_slam.hpp"
 
 namespace tessera::cli {
@@ -39,16 +44,71 @@ double data_duration_s(const LaserLog& log) {
   return hi->t_s - lo->t_s;
 }
 
+/// The scans' odometry poses as a trajectory.
+std::vector<StampedPose2> odometry_trajectory(const LaserLog& log) {
+  std::vector<StampedPose2> out;
+  out.reserve(log.scans.size());
+  for (const StampedScan& s : log.scans) out.push_back({s.t_s, s.odometry});
+  return out;
+}
+
+/// The TUM ATE of `estimate` against `truth` (same stamps).
+Result<AbsoluteTrajectoryError> ate(const std::vector<StampedPose2>& estimate,
+                                    const std::vector<StampedPose2>& truth) {
+  return absolute_trajectory_error(to_pose3(estimate), to_pose3(truth));
+}
+
+/// The planar part of a 3D alignment (x, y and the rotation about z).
+Pose2 planar(const Eigen::Isometry3d& T) {
+  return {T.translation().x(), T.translation().y(), std::atan2(T.linear()(1, 0), T.linear()(0, 0))};
+}
+
+/// What a simulated run is scored by: the ATE of SLAM, of local SLAM alone and of odometry alone
+/// against the truth, and the SLAM map against the world.
+struct SimulationScore {
+  double slam_ate_m = 0.0;
+  double local_ate_m = 0.0;
+  double odometry_ate_m = 0.0;
+  Pose2 T_truth_map;  // the SLAM trajectory's alignment, applied to its map
+  MapAccuracy map;
+};
+
+Result<SimulationScore> score_simulation(const SimulatedLaserRun& run, const World& world,
+                                         const slam::LaserSlamResult& r) {
+  Result<AbsoluteTrajectoryError> slam_ate = ate(r.trajectory, run.truth);
+  if (!slam_ate) return slam_ate.error();
+  Result<AbsoluteTrajectoryError> local_ate = ate(r.local_trajectory, run.truth);
+  if (!local_ate) return local_ate.error();
+  Result<AbsoluteTrajectoryError> odometry_ate = ate(odometry_trajectory(run.log), run.truth);
+  if (!odometry_ate) return odometry_ate.error();
+  SimulationScore score;
+  score.slam_ate_m = slam_ate->trans_m.rmse;
+  score.local_ate_m = local_ate->trans_m.rmse;
+  score.odometry_ate_m = odometry_ate->trans_m.rmse;
+  // The map lives in the SLAM trajectory's frame: align it as the ATE aligns the trajectory.
+  score.T_truth_map = planar(slam_ate->T_reference_estimate);
+  score.map = compare_to_truth_at_centres(r.map, world, score.T_truth_map);
+  return score;
+}
+
 }  // namespace
 
 SlamCommand::SlamCommand(CLI::App& app) {
   sub_ = app.add_subcommand(
       "slam",
-      "Laser SLAM on a 2D laser log (submaps, branch-and-bound loop closure, pose graph; Hess et "
-      "al. 2016); writes map.yaml + map.pgm, map.png, trajectory.txt (one pose per scan), "
+      "Laser SLAM (submaps, branch-and-bound loop closure, pose graph; Hess et al. 2016) on a 2D "
+      "laser log (--log), or on a simulated run in a world (--world / --builtin) scored against "
+      "its ground truth; writes map.yaml + map.pgm, map.png, trajectory.txt (one pose per scan), "
       "graph.g2o and report.json to --out");
-  sub_->add_option("--log", log_, "Laser log: CARMEN .clf/.log (FLASER, ROBOTLASER1, RAWLASER1)")
-      ->required();
+  sub_->add_option("--log", log_, "Laser log: CARMEN .clf/.log (FLASER, ROBOTLASER1, RAWLASER1)");
+  add_world_options(*sub_, world_);
+  sub_->add_option("--seed", seed_, "Simulated run: seed of the start, odometry and range noise")
+      ->capture_default_str();
+  sub_->add_option("--duration-s", duration_s_,
+                   "Simulated run: stop the covering tour after this many seconds (0: no limit)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  sub_->add_option("--start", start_, "Simulated run: start position X,Y in metres (default: random)");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
   sub_->add_option("--relations", relations_,
                    "Score the trajectory against a relations file (Kummerle et al. 2009)");
@@ -56,9 +116,10 @@ SlamCommand::SlamCommand(CLI::App& app) {
                    "Seconds added to the log's stamps to reach the relations' time base (Intel "
                    "raw log: 976052857.337284)")
       ->capture_default_str();
-  sub_->add_option("--map-resolution-m", map_resolution_m_, "Cell size of the output map")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  sub_->add_option("--cell-m", cell_m_,
+                   "Cell size of the output map (default: 0.05 for a log, the world's cell size "
+                   "for a simulated run, so that the map compares with it cell by cell)")
+      ->check(CLI::PositiveNumber);
   sub_->add_flag("--no-loop-closure", no_loop_closure_,
                  "Local SLAM only: scan-to-submap matching, no pose graph corrections");
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
@@ -68,14 +129,44 @@ int SlamCommand::run() const {
   if (!std::isfinite(time_offset_s_)) {
     return report_error(usage_error("--time-offset must be a finite number of seconds"));
   }
+  if (log_ && world_.file) return report_error(usage_error("give --log or --world, not both"));
+  if (!log_ && relations_) {
+    return report_error(usage_error("--relations scores a log: it needs --log"));
+  }
   slam::LaserSlamOptions options;
   options.loop_closure = !no_loop_closure_;
-  options.map_resolution_m = map_resolution_m_;
-  if (auto problem = slam::validate(options)) return report_error(usage_error(*problem));
 
-  // Inputs first: a bad log or relations file must leave nothing behind.
-  Result<LaserLog> log = read_carmen_log(log_);
-  if (!log) return report_error(log.error());
+  // Inputs first: a bad log, world or relations file must leave nothing behind.
+  std::optional<LaserLog> read_log;
+  std::optional<World> world;
+  std::optional<SimulatedLaserRun> simulated;
+  if (log_) {
+    Result<LaserLog> read = read_carmen_log(*log_);
+    if (!read) return report_error(read.error());
+    read_log = std::move(read).value();
+  } else {
+    Result<World> loaded = load_world(world_, 0.05);
+    if (!loaded) return report_error(loaded.error());
+    world = std::move(loaded).value();
+    LaserRunOptions run_options;
+    run_options.max_duration_s = duration_s_;
+    if (start_) {
+      Result<Vec2> p = parse_point(*start_, "--start");
+      if (!p) return report_error(p.error());
+      run_options.start = Pose2{p->x, p->y, 0.0};
+    }
+    Result<SimulatedLaserRun> run = simulate_laser_run(*world, run_options, seed_);
+    if (!run) {
+      Error e = run.error();
+      e.message = world->name().empty() ? e.message : world->name() + ": " + e.message;
+      return report_error(e);
+    }
+    simulated = std::move(run).value();
+  }
+  const LaserLog& log = simulated ? simulated->log : *read_log;
+  options.map_resolution_m = cell_m_ ? *cell_m_ : world ? world->geometry().resolution_m() : 0.05;
+  if (auto problem = slam::validate(options)) return report_error(usage_error(*problem));
+  const std::string input_name = log_ ? log_->string() : world->name();
   std::optional<std::vector<Relation>> relations;
   if (relations_) {
     Result<std::vector<Relation>> read = read_relations(*relations_);
@@ -90,16 +181,16 @@ int SlamCommand::run() const {
                               p.scans_done, p.scans_total, p.nodes, p.submaps, p.loop_closures));
   };
   const auto t0 = std::chrono::steady_clock::now();
-  Result<slam::LaserSlamResult> result = slam::run_laser_slam(*log, options);
+  Result<slam::LaserSlamResult> result = slam::run_laser_slam(log, options);
   progress.finish();
   const double wall_s = seconds_since(t0);
   if (!result) {
     Error e = result.error();
-    e.message = log_.string() + ": " + e.message;
+    e.message = input_name + ": " + e.message;
     return report_error(e);
   }
   const slam::LaserSlamResult& r = *result;
-  const double duration_s = data_duration_s(*log);
+  const double duration_s = data_duration_s(log);
 
   std::optional<RelationMetric> metric;
   if (relations) {
@@ -115,9 +206,9 @@ int SlamCommand::run() const {
   const slam::LaserSlamStats& st = r.stats;
   nlohmann::json report = {{"tessera_version", TESSERA_VERSION},
                            {"command", "slam"},
-                           {"seed", nullptr},
+                           {"seed", simulated ? nlohmann::json(seed_) : nlohmann::json(nullptr)},
                            {"options",
-                            {{"log", log_.string()},
+                            {{log_ ? "log" : "world", input_name},
                              {"loop_closure", options.loop_closure},
                              {"map_resolution_m", options.map_resolution_m},
                              {"submap_resolution_m", options.submaps.resolution_m},
@@ -138,7 +229,7 @@ int SlamCommand::run() const {
                              {"optimizations", st.optimizations},
                              {"graph_vertices", r.graph.poses.size()},
                              {"graph_edges", r.graph.edges.size()},
-                             {"backward_stamps", log->backward_stamps},
+                             {"backward_stamps", log.backward_stamps},
                              {"matching_s", st.matching_s},
                              {"loop_search_s", st.loop_search_s},
                              {"optimization_s", st.optimization_s},
@@ -148,6 +239,33 @@ int SlamCommand::run() const {
                              {"data_duration_s", duration_s},
                              {"realtime_factor", wall_s > 0.0 ? duration_s / wall_s : 0.0}}}};
   if (relations_) report["options"]["relations"] = relations_->string();
+  std::optional<SimulationScore> score;
+  if (simulated) {
+    Result<SimulationScore> scored = score_simulation(*simulated, *world, r);
+    if (!scored) return report_error(scored.error());
+    score = *scored;
+    const MapAccuracy& m = score->map;
+    report["simulation"] = {{"duration_s", simulated->duration_s},
+                            {"path_length_m", simulated->path_length_m},
+                            {"turned_rad", simulated->turned_rad},
+                            {"tour_completed", simulated->tour_completed},
+                            {"world_resolution_m", world->geometry().resolution_m()}};
+    report["ate"] = {{"slam_rmse_m", score->slam_ate_m},
+                     {"local_slam_rmse_m", score->local_ate_m},
+                     {"odometry_rmse_m", score->odometry_ate_m},
+                     {"odometry_over_slam",
+                      score->slam_ate_m > 0.0 ? score->odometry_ate_m / score->slam_ate_m : 0.0}};
+    report["map_accuracy"] = {{"truth", "world cell under each map cell's centre, map aligned as the ATE aligns the trajectory"},
+                              {"alignment_m_rad",
+                               {score->T_truth_map.x, score->T_truth_map.y,
+                                score->T_truth_map.theta}},
+                              {"cells_compared", m.cells_compared},
+                              {"occupied_compared", m.occupied_compared},
+                              {"occupied_as_empty", m.occupied_as_empty},
+                              {"empty_as_occupied", m.empty_as_occupied},
+                              {"occupied_as_empty_share", m.occupied_as_empty_share()},
+                              {"success_rate", m.success_rate}};
+  }
   if (metric) {
     report["options"]["time_offset_s"] = time_offset_s_;
     report["relations"] = relations_report(*metric, {})["relations"];
@@ -160,6 +278,10 @@ int SlamCommand::run() const {
   }
   RenderLayers layers;
   layers.map = &r.map;
+  if (world) {  // map errors in colour
+    layers.truth = &*world;
+    layers.T_truth_map = score->T_truth_map;
+  }
   std::vector<Vec2> path;
   path.reserve(r.trajectory.size());
   for (const StampedPose2& p : r.trajectory) path.push_back(p.pose.translation());
@@ -170,10 +292,18 @@ int SlamCommand::run() const {
   const std::string trajectory = encode_tum_trajectory(r.trajectory);
   const std::string graph = encode_g2o(r.graph);
   const std::string json = encode_json(report);
-  const std::array<PendingFile, 4> files{{{out_ / "map.png", *png},
-                                          {out_ / "trajectory.txt", trajectory},
-                                          {out_ / "graph.g2o", graph},
-                                          {out_ / "report.json", json}}};
+  std::vector<PendingFile> files{{out_ / "map.png", *png},
+                                 {out_ / "trajectory.txt", trajectory},
+                                 {out_ / "graph.g2o", graph},
+                                 {out_ / "report.json", json}};
+  std::string truth_tum;  // PendingFile holds a view: the bytes must outlive the write
+  std::string odometry_tum;
+  if (simulated) {
+    truth_tum = encode_tum_trajectory(simulated->truth);
+    odometry_tum = encode_tum_trajectory(odometry_trajectory(log));
+    files.push_back({out_ / "truth.txt", truth_tum});
+    files.push_back({out_ / "odometry.txt", odometry_tum});
+  }
   if (Status s = write_files_atomic(files); !s) return report_error(s.error());
 
   if (!quiet_) {
@@ -189,8 +319,17 @@ int SlamCommand::run() const {
           metric->count, metric->trans_mean_m, metric->trans_std_m,
           rad_to_deg(metric->rot_mean_rad), rad_to_deg(metric->rot_std_rad));
     }
-    fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt graph.g2o report.json\n",
-               out_.string());
+    if (score) {
+      fmt::print(
+          "ground truth: ATE {:.4f} m with SLAM, {:.4f} m odometry alone ({:.1f}x); map: {} of "
+          "{} occupied cells seen as empty ({:.2f} %)\n",
+          score->slam_ate_m, score->odometry_ate_m,
+          score->slam_ate_m > 0.0 ? score->odometry_ate_m / score->slam_ate_m : 0.0,
+          score->map.occupied_as_empty, score->map.occupied_compared,
+          100.0 * score->map.occupied_as_empty_share());
+    }
+    fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt graph.g2o report.json{}\n",
+               out_.string(), simulated ? " truth.txt odometry.txt" : "");
   }
   return kExitOk;
 }

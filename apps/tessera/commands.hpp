@@ -146,11 +146,15 @@ class SlamCommand : public Command {
   [[nodiscard]] int run() const;
 
  private:
-  std::filesystem::path log_;
+  std::optional<std::filesystem::path> log_;  // empty: a simulated run in world_
+  WorldSource world_;
+  std::uint64_t seed_ = 1;
+  double duration_s_ = 300.0;
+  std::optional<std::string> start_;  // "X,Y" in metres
   std::filesystem::path out_ = "out/slam";
   std::optional<std::filesystem::path> relations_;
   double time_offset_s_ = 0.0;
-  double map_resolution_m_ = 0.05;
+  std::optional<double> cell_m_;  // default: 0.05 m for a log, the world's cell for a simulated run
   bool no_loop_closure_ = false;
   bool quiet_ = false;
 };

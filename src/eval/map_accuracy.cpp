@@ -1,11 +1,13 @@
 #include "tessera/eval/map_accuracy.hpp"
 
 namespace tessera {
+namespace {
 
-MapAccuracy compare_to_truth(const OccupancyGrid& map, const World& truth,
-                             double occupied_threshold) {
+/// Counts every known cell of `map` against truth_solid(cell).
+template <typename TruthSolid>
+MapAccuracy count_against(const OccupancyGrid& map, double occupied_threshold,
+                          const TruthSolid& truth_solid) {
   const GridGeometry& g = map.geometry();
-  TESSERA_ASSERT(g.width() == truth.geometry().width() && g.height() == truth.geometry().height());
   const float threshold_lo = log_odds(occupied_threshold);
   MapAccuracy a;
   for (int y = 0; y < g.height(); ++y) {
@@ -14,7 +16,8 @@ MapAccuracy compare_to_truth(const OccupancyGrid& map, const World& truth,
       if (!map.known(c)) continue;
       ++a.cells_compared;
       const bool map_occupied = map.log_odds_at(c) >= threshold_lo;
-      const bool truth_occupied = truth.solid(c);
+      const bool truth_occupied = truth_solid(c);
+      if (truth_occupied) ++a.occupied_compared;
       if (map_occupied == truth_occupied) {
         ++a.correct;
       } else if (map_occupied) {
@@ -28,6 +31,25 @@ MapAccuracy compare_to_truth(const OccupancyGrid& map, const World& truth,
                        ? 0.0
                        : static_cast<double>(a.correct) / static_cast<double>(a.cells_compared);
   return a;
+}
+
+}  // namespace
+
+MapAccuracy compare_to_truth(const OccupancyGrid& map, const World& truth,
+                             double occupied_threshold) {
+  TESSERA_ASSERT(map.geometry().width() == truth.geometry().width() &&
+                 map.geometry().height() == truth.geometry().height());
+  return count_against(map, occupied_threshold, [&](Cell c) { return truth.solid(c); });
+}
+
+MapAccuracy compare_to_truth_at_centres(const OccupancyGrid& map, const World& truth,
+                                        const Pose2& T_truth_map, double occupied_threshold) {
+  const GridGeometry& g = map.geometry();
+  const GridGeometry& w = truth.geometry();
+  return count_against(map, occupied_threshold, [&](Cell c) {
+    const Vec2 centre = T_truth_map * g.center_of(c);
+    return truth.solid(w.cell_at_unchecked(centre));
+  });
 }
 
 }  // namespace tessera

@@ -63,7 +63,8 @@ Result<RgbImage> render_image(const RenderLayers& layers, int pixels_per_cell) {
         color = {v, v, v};
         if (layers.truth != nullptr) {
           const bool solid =
-              layers.truth->solid(layers.truth->geometry().cell_at_unchecked(g.center_of(c)));
+              layers.truth->solid(
+                  layers.truth->geometry().cell_at_unchecked(layers.T_truth_map * g.center_of(c)));
           const CellState state = map.state(c);
           if (state == CellState::kFree && solid) color = kOccupiedAsEmptyColor;
           if (state == CellState::kOccupied && !solid) color = kEmptyAsOccupiedColor;

@@ -1,5 +1,6 @@
-// tessera slam end to end: outputs and report fields on a slice of the real Intel log, and bad
-// input (exit 3, one line, nothing written).
+// tessera slam end to end: outputs and report fields on a slice of the real Intel log and on a
+// simulated run scored against its ground truth, and bad input (exit 2 or 3, one line, nothing
+// written).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -87,6 +88,52 @@ TEST(CliSlam, RelationsOutsideTheLogAreAnInputErrorAndWriteNothing) {
   const support::CliRun run = run_cli("slam --quiet --log " + log.string() + " --relations " +
                                       (dir / "r.relations").string() + " --out " + out.string());
   EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// A simulated run in the built-in office: SLAM must beat odometry by far, and the map must not
+// show free space where the world is solid (the bars: 5x, 0.5 %).
+TEST(CliSlam, SimulatedRunIsScoredAgainstItsGroundTruth) {
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  const support::CliRun run =
+      run_cli("slam --builtin office --duration-s 90 --seed 3 --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("ground truth: ATE"));
+  for (const char* f : {"map.png", "trajectory.txt", "truth.txt", "odometry.txt", "report.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  }
+  const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
+  EXPECT_EQ(report["seed"], 3);
+  EXPECT_NEAR(report["simulation"]["duration_s"].get<double>(), 90.0, 0.2);
+  const nlohmann::json& ate = report["ate"];
+  EXPECT_LT(ate["slam_rmse_m"].get<double>(), 0.05);
+  EXPECT_GE(ate["odometry_rmse_m"].get<double>(), 5.0 * ate["slam_rmse_m"].get<double>());
+  const nlohmann::json& map = report["map_accuracy"];
+  EXPECT_GT(map["occupied_compared"].get<int>(), 500);
+  EXPECT_LT(map["occupied_as_empty_share"].get<double>(), 0.005);
+  EXPECT_DOUBLE_EQ(report["options"]["map_resolution_m"].get<double>(), 0.05);  // the world's cell
+}
+
+TEST(CliSlam, LogAndWorldTogetherIsAUsageError) {
+  TempDir dir;
+  support::write_bytes(dir / "a.clf", "");
+  const auto out = dir.path() / "out";
+  const support::CliRun run = run_cli("slam --log " + (dir / "a.clf").string() + " --world " +
+                                      (dir / "a.clf").string() + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("not both"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliSlam, UnreadableWorldIsAnInputErrorAndWritesNothing) {
+  TempDir dir;
+  support::write_bytes(dir / "w.yaml", "image: missing.pgm\nresolution: 0.05\n");
+  const auto out = dir.path() / "out";
+  const support::CliRun run =
+      run_cli("slam --world " + (dir / "w.yaml").string() + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("w.yaml"));
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 

@@ -54,5 +54,41 @@ TEST(MapAccuracy, PerfectMapOfTheTruthScoresOne) {
   EXPECT_DOUBLE_EQ(a.success_rate, 1.0);
 }
 
+TEST(MapAccuracy, CountsTheOccupiedCellsComparedForTheShare) {
+  const World truth = four_cells();
+  OccupancyGrid map(truth.geometry());
+  map.set_probability({1, 0}, 0.2);  // solid sensed as empty
+  map.set_probability({3, 0}, 0.9);  // solid sensed as occupied
+  map.set_probability({0, 0}, 0.1);
+  const MapAccuracy a = compare_to_truth(map, truth);
+  EXPECT_EQ(a.occupied_compared, 2u);
+  EXPECT_DOUBLE_EQ(a.occupied_as_empty_share(), 0.5);
+}
+
+// A SLAM map lives on its own grid: here cells of 0.25 m shifted by 0.1 m against the truth's
+// 0.5 m cells. Each map cell takes the truth of the world cell under its centre.
+TEST(MapAccuracy, AtCentresComparesAMapOnAnotherGrid) {
+  const World truth = four_cells();  // x in [0, 0.5) free, [0.5, 1) solid, [1, 1.5) free, ...
+  OccupancyGrid map(GridGeometry({0.1, 0.0}, 0.25, 4, 1));
+  // Centres at 0.225 (free), 0.475 (free), 0.725 (solid), 0.975 (solid).
+  map.set_probability({0, 0}, 0.1);
+  map.set_probability({1, 0}, 0.9);  // free sensed as occupied
+  map.set_probability({2, 0}, 0.9);
+  map.set_probability({3, 0}, 0.2);  // solid sensed as empty
+  const MapAccuracy a = compare_to_truth_at_centres(map, truth);
+  EXPECT_EQ(a.cells_compared, 4u);
+  EXPECT_EQ(a.correct, 2u);
+  EXPECT_EQ(a.empty_as_occupied, 1u);
+  EXPECT_EQ(a.occupied_as_empty, 1u);
+  EXPECT_EQ(a.occupied_compared, 2u);
+}
+
+TEST(MapAccuracy, AtCentresTreatsSpaceOutsideTheWorldAsSolid) {
+  const World truth = four_cells();
+  OccupancyGrid map(GridGeometry({-1.0, 0.0}, 0.5, 1, 1));  // entirely left of the world
+  map.set_probability({0, 0}, 0.1);
+  EXPECT_EQ(compare_to_truth_at_centres(map, truth).occupied_as_empty, 1u);
+}
+
 }  // namespace
 }  // namespace tessera

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "tessera/core/cell.hpp"
+#include "tessera/core/pose2.hpp"
 #include "tessera/core/result.hpp"
 #include "tessera/core/vec2.hpp"
 #include "tessera/grid/occupancy_grid.hpp"
@@ -19,6 +20,8 @@ struct RenderLayers {
   /// Ground truth: when given, map errors are coloured (map free where truth is solid: red;
   /// map occupied where truth is free: orange). Cells are matched by the map cell's centre.
   const World* truth = nullptr;
+  /// Where the map's frame lies in the truth's (compare_to_truth_at_centres in eval/map_accuracy).
+  Pose2 T_truth_map;
   std::vector<std::vector<Vec2>> paths_m;  // one polyline per robot, map frame, metres
   std::vector<Cell> frontier;              // map cells
   std::vector<Vec2> robots_m;              // final positions; robot i has path i's colour

@@ -42,26 +42,6 @@ double known_fraction(const ProbabilityGrid& grid, const Pose2& T_grid_robot,
   return static_cast<double>(known) / static_cast<double>(points_robot.size());
 }
 
-/// `points` for the final map: returns farther than max_range_m from the sensor become misses at
-/// that range (they still clear the free space in front of them). max_range_m <= 0: unchanged.
-ScanPoints within_range(const ScanPoints& points, double max_range_m) {
-  if (max_range_m <= 0.0) return points;
-  ScanPoints out;
-  out.origin_m = points.origin_m;
-  out.misses_m = points.misses_m;
-  for (std::size_t i = 0; i < points.returns_m.size(); ++i) {
-    const Vec2 d = points.returns_m[i] - points.origin_m;
-    const double range_m = d.norm();
-    if (range_m <= max_range_m) {
-      out.returns_m.push_back(points.returns_m[i]);
-      out.return_beams.push_back(points.return_beams[i]);
-    } else {
-      out.misses_m.push_back(points.origin_m + d * (max_range_m / range_m));
-    }
-  }
-  return out;
-}
-
 /// Cartographer's FixedRatioSampler: says yes to a share `ratio` of the calls, evenly spread.
 class FixedRatioSampler {
  public:
@@ -112,7 +92,6 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
   if (!(o.loop_hessian_scale >= 0.0)) return "loop_hessian_scale must be >= 0";
   if (!(o.huber_scale > 0.0)) return "huber_scale must be > 0";
   if (!(o.map_resolution_m > 0.0)) return "map_resolution_m must be > 0";
-  if (!(o.map_max_range_m >= 0.0)) return "map_max_range_m must be >= 0";
   if (auto p = validate(o.map_insert)) return "map_insert." + *p;
   return std::nullopt;
 }
@@ -386,7 +365,7 @@ struct LaserSlam::Impl {
                                            static_cast<int>(std::ceil(20.0 / res)),
                                            static_cast<int>(std::ceil(20.0 / res))));
       }
-      inserter.insert(map, T, within_range(node.points, options.map_max_range_m));
+      inserter.insert(map, T, node.points);
     }
     out.map = map.to_occupancy_grid(2);
     stats.map_s = seconds_since(t_map);

@@ -45,7 +45,11 @@ struct SlamProgress {
 };
 
 struct LaserSlamOptions {
-  ScanPointsOptions points;
+  /// Returns beyond 8 m only clear free space: a heading error of 0.2 deg moves a return 8 m away
+  /// by 2.8 cm, about a cell, and the near views of a wall are the better ones. Against 30 m: on
+  /// Intel 0.0198 m / 0.29 deg instead of 0.0187 m / 0.27 deg at twice the speed; on simulated
+  /// runs the map's worst occupied-as-empty share 0.38 % instead of 0.58 % (decision 0009).
+  ScanPointsOptions points{.min_range_m = 0.1, .max_range_m = 8.0, .missing_ray_length_m = 5.0};
   /// Voxel size of the points used for local matching (0: every point).
   double matching_voxel_m = 0.0;
   /// Points for the branch-and-bound search of loop closure: few and spread evenly (at least 40,
@@ -104,10 +108,6 @@ struct LaserSlamOptions {
                                 .miss_probability = 0.49,
                                 .insert_free_space = true,
                                 .miss_margin_m = 0.03};
-  /// Returns farther than this only clear free space up to it in the final map (0: no limit). A
-  /// heading error of 0.2 deg moves a return 8 m away by 2.8 cm, about a cell; the near views of
-  /// the same wall are the better ones (decision 0009).
-  double map_max_range_m = 8.0;
 
   /// Called after every scan (on the calling thread).
   std::function<void(const SlamProgress&)> progress;

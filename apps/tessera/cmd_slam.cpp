@@ -52,12 +52,6 @@ std::vector<StampedPose2> odometry_trajectory(const LaserLog& log) {
   return out;
 }
 
-/// The TUM ATE of `estimate` against `truth` (same stamps).
-Result<AbsoluteTrajectoryError> ate(const std::vector<StampedPose2>& estimate,
-                                    const std::vector<StampedPose2>& truth) {
-  return absolute_trajectory_error(to_pose3(estimate), to_pose3(truth));
-}
-
 /// The planar part of a 3D alignment (x, y and the rotation about z).
 Pose2 planar(const Eigen::Isometry3d& T) {
   return {T.translation().x(), T.translation().y(), std::atan2(T.linear()(1, 0), T.linear()(0, 0))};
@@ -75,11 +69,13 @@ struct SimulationScore {
 
 Result<SimulationScore> score_simulation(const SimulatedLaserRun& run, const World& world,
                                          const slam::LaserSlamResult& r) {
-  Result<AbsoluteTrajectoryError> slam_ate = ate(r.trajectory, run.truth);
+  Result<AbsoluteTrajectoryError> slam_ate = absolute_trajectory_error(r.trajectory, run.truth);
   if (!slam_ate) return slam_ate.error();
-  Result<AbsoluteTrajectoryError> local_ate = ate(r.local_trajectory, run.truth);
+  Result<AbsoluteTrajectoryError> local_ate =
+      absolute_trajectory_error(r.local_trajectory, run.truth);
   if (!local_ate) return local_ate.error();
-  Result<AbsoluteTrajectoryError> odometry_ate = ate(odometry_trajectory(run.log), run.truth);
+  Result<AbsoluteTrajectoryError> odometry_ate =
+      absolute_trajectory_error(odometry_trajectory(run.log), run.truth);
   if (!odometry_ate) return odometry_ate.error();
   SimulationScore score;
   score.slam_ate_m = slam_ate->trans_m.rmse;

@@ -298,41 +298,38 @@ Result<LaserLog> read_carmen_log(const std::filesystem::path& path,
   double old_format_max_m = 0.0;
   int skipped_rear = 0;
 
-  io_internal::LineCursor cursor(*bytes);
-  std::string_view text;
-  int line_no = 0;
-  std::vector<std::string_view> fields;
-  while (cursor.next(text, line_no)) {
-    io_internal::split_fields(text, fields);
-    if (io_internal::is_blank_or_comment(fields)) continue;
-    const std::string_view tag = fields.front();
-    MessageLine line(file, line_no, fields);
-    if (tag == "ODOM") {
-      Result<OdometryReading> odom = parse_odom(line);
-      if (!odom) return odom.error();
-      log.odometry.push_back(*odom);
-      continue;
-    }
-    const bool old = tag == "FLASER" || tag == "RLASER";
-    if (!old && tag != "ROBOTLASER1" && tag != "RAWLASER1") {
-      continue;  // PARAM, NEFF, TRUEPOS, SYNC and messages this reader does not use
-    }
-    if (tag == "RLASER" && !options.rear_laser) {
-      ++skipped_rear;
-      continue;
-    }
-    Result<StampedScan> scan = old                    ? parse_old_laser(line, tag)
-                               : tag == "ROBOTLASER1" ? parse_robot_laser(line)
-                                                      : parse_raw_laser(line);
-    if (!scan) return scan.error();
-    if (old) {
-      old_format.push_back(log.scans.size());
-      for (double r : scan->scan.ranges_m) old_format_max_m = std::max(old_format_max_m, r);
-    } else if (tag == "RAWLASER1") {
-      pending.push_back({log.scans.size(), log.odometry.size(), line_no});
-    }
-    log.scans.push_back(std::move(scan).value());
-  }
+  const Status read = io_internal::for_each_record(
+      *bytes, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
+        const std::string_view tag = fields.front();
+        MessageLine line(file, line_no, fields);
+        if (tag == "ODOM") {
+          Result<OdometryReading> odom = parse_odom(line);
+          if (!odom) return odom.error();
+          log.odometry.push_back(*odom);
+          return Ok{};
+        }
+        const bool old = tag == "FLASER" || tag == "RLASER";
+        if (!old && tag != "ROBOTLASER1" && tag != "RAWLASER1") {
+          return Ok{};  // PARAM, NEFF, TRUEPOS, SYNC and messages this reader does not use
+        }
+        if (tag == "RLASER" && !options.rear_laser) {
+          ++skipped_rear;
+          return Ok{};
+        }
+        Result<StampedScan> scan = old                    ? parse_old_laser(line, tag)
+                                   : tag == "ROBOTLASER1" ? parse_robot_laser(line)
+                                                          : parse_raw_laser(line);
+        if (!scan) return scan.error();
+        if (old) {
+          old_format.push_back(log.scans.size());
+          for (double r : scan->scan.ranges_m) old_format_max_m = std::max(old_format_max_m, r);
+        } else if (tag == "RAWLASER1") {
+          pending.push_back({log.scans.size(), log.odometry.size(), line_no});
+        }
+        log.scans.push_back(std::move(scan).value());
+        return Ok{};
+      });
+  if (!read) return read.error();
 
   if (log.scans.empty()) {
     std::string what = file + ": no laser scans (FLASER, RLASER, ROBOTLASER1 or RAWLASER1 lines)";

@@ -105,63 +105,64 @@ Result<slam::PoseGraph> read_g2o(const std::filesystem::path& path) {
   std::unordered_map<int, int> vertex_line;  // g2o id -> line of its VERTEX_SE2
   std::vector<RawEdge> raw;
 
-  io_internal::LineCursor cursor(*bytes);
-  std::string_view text;
-  int line_no = 0;
-  std::vector<std::string_view> fields;
-  while (cursor.next(text, line_no)) {
-    io_internal::split_fields(text, fields);
-    if (io_internal::is_blank_or_comment(fields)) continue;
-    const std::string_view tag = fields.front();
-    const bool vertex = tag == "VERTEX_SE2";
-    if (!vertex && tag != "EDGE_SE2") continue;
-    const std::string where = file + ":" + std::to_string(line_no) + ": ";
-    const std::size_t expected = vertex ? 5 : 12;
-    if (fields.size() != expected) {
-      return input_error(where + std::string(tag) + " line has " + std::to_string(fields.size()) +
-                         " fields, expected " + std::to_string(expected) +
-                         (vertex ? " (VERTEX_SE2 id x y theta)"
-                                 : " (EDGE_SE2 i j dx dy dtheta I11 I12 I13 I22 I23 I33)"));
-    }
-    const std::size_t ids = vertex ? 1 : 2;
-    std::array<int, 2> id{};
-    for (std::size_t k = 0; k < ids; ++k) {
-      if (!io_internal::parse_int(fields[1 + k], id[k])) {
-        return input_error(where + std::string(tag) + " vertex id '" + std::string(fields[1 + k]) +
-                           "' is not an integer");
-      }
-    }
-    std::array<double, 9> v{};
-    for (std::size_t k = 0; k + 1 + ids < fields.size(); ++k) {
-      if (!io_internal::parse_double(fields[k + 1 + ids], v[k])) {
-        return input_error(where + std::string(tag) + " " + std::string(kValueNames[k]) + " is '" +
-                           std::string(fields[k + 1 + ids]) + "', expected a finite number");
-      }
-    }
-    const Pose2 pose{v[0], v[1], io_internal::wrap_angle(v[2])};
-    if (vertex) {
-      if (const auto it = vertex_line.find(id[0]); it != vertex_line.end()) {
-        return input_error(where + "vertex " + std::to_string(id[0]) +
-                           " is already defined on line " + std::to_string(it->second));
-      }
-      vertex_line[id[0]] = line_no;
-      index_of[id[0]] = static_cast<int>(graph.poses.size());
-      graph.poses.push_back(pose);
-      graph.ids.push_back(id[0]);
-      continue;
-    }
-    if (id[0] == id[1]) {
-      return input_error(where + "EDGE_SE2 joins vertex " + std::to_string(id[0]) + " to itself");
-    }
-    RawEdge r{id[0], id[1], {}, line_no};
-    r.edge.measurement = pose;
-    r.edge.information = information_from_upper({v[3], v[4], v[5], v[6], v[7], v[8]});
-    if (Eigen::LLT<Eigen::Matrix3d>(r.edge.information).info() != Eigen::Success) {
-      return input_error(where + "EDGE_SE2 " + std::to_string(id[0]) + " " + std::to_string(id[1]) +
-                         ": information matrix is not positive definite");
-    }
-    raw.push_back(r);
-  }
+  const Status read = io_internal::for_each_record(
+      *bytes, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
+        const std::string_view tag = fields.front();
+        const bool vertex = tag == "VERTEX_SE2";
+        if (!vertex && tag != "EDGE_SE2") return Ok{};
+        const std::string where = file + ":" + std::to_string(line_no) + ": ";
+        const std::size_t expected = vertex ? 5 : 12;
+        if (fields.size() != expected) {
+          return input_error(where + std::string(tag) + " line has " +
+                             std::to_string(fields.size()) + " fields, expected " +
+                             std::to_string(expected) +
+                             (vertex ? " (VERTEX_SE2 id x y theta)"
+                                     : " (EDGE_SE2 i j dx dy dtheta I11 I12 I13 I22 I23 I33)"));
+        }
+        const std::size_t ids = vertex ? 1 : 2;
+        std::array<int, 2> id{};
+        for (std::size_t k = 0; k < ids; ++k) {
+          if (!io_internal::parse_int(fields[1 + k], id[k])) {
+            return input_error(where + std::string(tag) + " vertex id '" +
+                               std::string(fields[1 + k]) + "' is not an integer");
+          }
+        }
+        std::array<double, 9> v{};
+        for (std::size_t k = 0; k + 1 + ids < fields.size(); ++k) {
+          if (!io_internal::parse_double(fields[k + 1 + ids], v[k])) {
+            return input_error(where + std::string(tag) + " " + std::string(kValueNames[k]) +
+                               " is '" + std::string(fields[k + 1 + ids]) +
+                               "', expected a finite number");
+          }
+        }
+        const Pose2 pose{v[0], v[1], io_internal::wrap_angle(v[2])};
+        if (vertex) {
+          if (const auto it = vertex_line.find(id[0]); it != vertex_line.end()) {
+            return input_error(where + "vertex " + std::to_string(id[0]) +
+                               " is already defined on line " + std::to_string(it->second));
+          }
+          vertex_line[id[0]] = line_no;
+          index_of[id[0]] = static_cast<int>(graph.poses.size());
+          graph.poses.push_back(pose);
+          graph.ids.push_back(id[0]);
+          return Ok{};
+        }
+        if (id[0] == id[1]) {
+          return input_error(where + "EDGE_SE2 joins vertex " + std::to_string(id[0]) +
+                             " to itself");
+        }
+        RawEdge r{id[0], id[1], {}, line_no};
+        r.edge.measurement = pose;
+        r.edge.information = information_from_upper({v[3], v[4], v[5], v[6], v[7], v[8]});
+        if (Eigen::LLT<Eigen::Matrix3d>(r.edge.information).info() != Eigen::Success) {
+          return input_error(where + "EDGE_SE2 " + std::to_string(id[0]) + " " +
+                             std::to_string(id[1]) +
+                             ": information matrix is not positive definite");
+        }
+        raw.push_back(r);
+        return Ok{};
+      });
+  if (!read) return read.error();
 
   if (graph.poses.empty() && raw.empty()) {
     return input_error(file + ": no VERTEX_SE2 or EDGE_SE2 lines");

@@ -2,11 +2,11 @@
 
 #include <array>
 #include <cmath>
-#include <exception>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+#include "internal/cv_image.hpp"
 #include "internal/file_util.hpp"
 #include "tessera/io/pgm.hpp"
 
@@ -15,10 +15,6 @@ namespace {
 
 bool looks_like_pgm(const std::string& bytes) {
   return bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '5' || bytes[1] == '2');
-}
-
-bool looks_like_png(const std::string& bytes) {
-  return bytes.size() >= 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
 }
 
 // CRC-32 as PNG uses it (ISO 3309 / ITU-T V.42, PNG specification section 5.5).
@@ -41,6 +37,17 @@ std::uint32_t big_endian_32(const unsigned char* p) {
   return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) |
          std::uint32_t{p[3]};
 }
+
+std::uint8_t to_8_bit(const cv::Mat& m, int row, int col, int channel) {
+  const int channels = m.channels();
+  if (m.depth() == CV_16U) {
+    const auto v = m.ptr<std::uint16_t>(row)[col * channels + channel];
+    return static_cast<std::uint8_t>((static_cast<unsigned>(v) * 255u + 32767u) / 65535u);
+  }
+  return m.ptr<std::uint8_t>(row)[col * channels + channel];
+}
+
+}  // namespace
 
 // Walks the PNG chunk structure (PNG specification section 5) and checks every chunk's CRC, so that
 // truncated or damaged files are reported here instead of by libpng, whose default error handler
@@ -71,17 +78,6 @@ std::string png_structure_problem(const std::string& bytes) {
   }
 }
 
-std::uint8_t to_8_bit(const cv::Mat& m, int row, int col, int channel) {
-  const int channels = m.channels();
-  if (m.depth() == CV_16U) {
-    const auto v = m.ptr<std::uint16_t>(row)[col * channels + channel];
-    return static_cast<std::uint8_t>((static_cast<unsigned>(v) * 255u + 32767u) / 65535u);
-  }
-  return m.ptr<std::uint8_t>(row)[col * channels + channel];
-}
-
-}  // namespace
-
 Result<RawImage> read_raw_image(const std::filesystem::path& path) {
   Result<std::string> bytes = read_file_bytes(path);
   if (!bytes) return bytes.error();
@@ -102,13 +98,7 @@ Result<RawImage> read_raw_image(const std::filesystem::path& path) {
       return input_error(path.string() + ": cannot decode image: " + problem);
     }
   }
-  cv::Mat m;
-  try {
-    const cv::Mat buffer(1, static_cast<int>(bytes->size()), CV_8UC1, bytes->data());
-    m = cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
-  } catch (const std::exception&) {
-    m.release();
-  }
+  const cv::Mat m = imdecode_or_empty(*bytes, cv::IMREAD_UNCHANGED);
   if (m.empty() || m.dims != 2 || (m.depth() != CV_8U && m.depth() != CV_16U) || m.channels() < 1 ||
       m.channels() > 4) {
     return input_error(path.string() + ": cannot decode image (expected a PNG or PGM file)");

@@ -3,6 +3,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "internal/file_util.hpp"
 #include "internal/text_fields.hpp"
@@ -17,27 +18,24 @@ Result<std::vector<Relation>> read_relations(const std::filesystem::path& path) 
                                                       "z",  "roll", "pitch", "yaw"};
 
   std::vector<Relation> relations;
-  io_internal::LineCursor cursor(*bytes);
-  std::string_view text;
-  int line_no = 0;
-  std::vector<std::string_view> fields;
-  while (cursor.next(text, line_no)) {
-    io_internal::split_fields(text, fields);
-    if (io_internal::is_blank_or_comment(fields)) continue;
-    const std::string where = file + ":" + std::to_string(line_no) + ": ";
-    if (fields.size() != kNames.size()) {
-      return input_error(where + "expected 8 fields 't1 t2 x y z roll pitch yaw', got " +
-                         std::to_string(fields.size()));
-    }
-    std::array<double, 8> v{};
-    for (std::size_t i = 0; i < kNames.size(); ++i) {
-      if (!io_internal::parse_double(fields[i], v[i])) {
-        return input_error(where + std::string(kNames[i]) + " is '" + std::string(fields[i]) +
-                           "', expected a finite number");
-      }
-    }
-    relations.push_back({v[0], v[1], {v[2], v[3], io_internal::wrap_angle(v[7])}});
-  }
+  const Status read = io_internal::for_each_record(
+      *bytes, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
+        const std::string where = file + ":" + std::to_string(line_no) + ": ";
+        if (fields.size() != kNames.size()) {
+          return input_error(where + "expected 8 fields 't1 t2 x y z roll pitch yaw', got " +
+                             std::to_string(fields.size()));
+        }
+        std::array<double, 8> v{};
+        for (std::size_t i = 0; i < kNames.size(); ++i) {
+          if (!io_internal::parse_double(fields[i], v[i])) {
+            return input_error(where + std::string(kNames[i]) + " is '" + std::string(fields[i]) +
+                               "', expected a finite number");
+          }
+        }
+        relations.push_back({v[0], v[1], {v[2], v[3], io_internal::wrap_angle(v[7])}});
+        return Ok{};
+      });
+  if (!read) return read.error();
   if (relations.empty()) {
     return input_error(file + ": no relations (lines 't1 t2 x y z roll pitch yaw')");
   }

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "internal/cv_image.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/image_file.hpp"
 
@@ -96,13 +97,7 @@ Result<RgbImage> render_image(const RenderLayers& layers, int pixels_per_cell) {
     cv::circle(image, center, radius, cv::Scalar(0, 0, 0), 1, cv::LINE_8);
   }
 
-  RgbImage out(image.cols, image.rows);
-  for (int row = 0; row < image.rows; ++row) {
-    const auto* src = image.ptr<std::uint8_t>(row);
-    std::copy(src, src + 3 * image.cols,
-              out.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(row) * image.cols);
-  }
-  return out;
+  return io_internal::to_rgb_image(image);
 }
 
 Result<std::string> render_png(const RenderLayers& layers, int pixels_per_cell) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "tessera/core/assert.hpp"
@@ -88,6 +89,26 @@ bool World::any_solid_in(Vec2 lo_m, Vec2 hi_m) const {
     }
   }
   return false;
+}
+
+double World::distance_to_solid(Vec2 p_m, double search_m) const {
+  TESSERA_ASSERT(search_m >= 0.0);
+  const double r = geometry_.resolution_m();
+  const Cell c = geometry_.cell_at_unchecked(p_m);
+  const int k = static_cast<int>(std::ceil(search_m / r)) + 1;
+  double best = std::numeric_limits<double>::infinity();
+  for (int dy = -k; dy <= k; ++dy) {
+    for (int dx = -k; dx <= k; ++dx) {
+      const Cell s{c.x + dx, c.y + dy};
+      if (!solid(s)) continue;
+      // Gap between p_m and the cell's square along each axis, 0 where p_m is within its span.
+      const double x0 = geometry_.origin().x + s.x * r, y0 = geometry_.origin().y + s.y * r;
+      const double gx = std::max({x0 - p_m.x, 0.0, p_m.x - (x0 + r)});
+      const double gy = std::max({y0 - p_m.y, 0.0, p_m.y - (y0 + r)});
+      best = std::min(best, std::hypot(gx, gy));
+    }
+  }
+  return best;
 }
 
 World World::cropped(Vec2 lo_m, Vec2 hi_m) const {

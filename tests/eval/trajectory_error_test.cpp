@@ -175,6 +175,29 @@ TEST(AbsoluteTrajectoryError, FewerThanTwoPairsIsAnInputError) {
   EXPECT_THAT(ate.error().message, HasSubstr("1 of 11 estimate stamps are within 0.02 s"));
 }
 
+// Planar trajectories (the SLAM and fusion commands' case) score as their 3D lift: an L-shaped
+// path, and an estimate that is its copy turned by 0.3 rad and shifted, with one pose 0.1 m off.
+TEST(AbsoluteTrajectoryError, PlanarTrajectoriesScoreAsTheir3DLift) {
+  std::vector<StampedPose2> reference, estimate;
+  const Pose2 T{1.5, -2.0, 0.3};
+  for (int i = 0; i < 20; ++i) {
+    const Pose2 p = i < 10 ? Pose2{0.2 * i, 0.0, 0.0} : Pose2{1.8, 0.2 * (i - 9), 1.57};
+    reference.push_back({0.1 * i, p});
+    Pose2 q = T * p;
+    if (i == 7) q.y += 0.1;
+    estimate.push_back({0.1 * i, q});
+  }
+  const Result<AbsoluteTrajectoryError> planar = absolute_trajectory_error(estimate, reference);
+  const Result<AbsoluteTrajectoryError> lifted =
+      absolute_trajectory_error(to_pose3(estimate), to_pose3(reference));
+  ASSERT_TRUE(planar.ok()) << planar.error().message;
+  ASSERT_TRUE(lifted.ok());
+  EXPECT_EQ(planar->trans_m.count, 20u);
+  EXPECT_EQ(planar->trans_m.rmse, lifted->trans_m.rmse);
+  EXPECT_GT(planar->trans_m.rmse, 0.01);  // the 0.1 m pose, spread by the alignment
+  EXPECT_LT(planar->trans_m.rmse, 0.1 / std::sqrt(20.0));
+}
+
 TEST(TrajectoryErrorOptions, RejectsNonPositiveValues) {
   EXPECT_FALSE(validate(TrajectoryErrorOptions{}).has_value());
   EXPECT_THAT(validate(TrajectoryErrorOptions{0.0, 1.0}).value_or(""),

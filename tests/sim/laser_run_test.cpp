@@ -19,27 +19,6 @@ namespace {
 
 using ::testing::HasSubstr;
 
-/// Exact distance from p to the nearest solid cell (outside the grid counts as solid) among those
-/// within search_m; infinity when there is none.
-double distance_to_solid(const World& world, Vec2 p, double search_m) {
-  const GridGeometry& g = world.geometry();
-  const double r = g.resolution_m();
-  const Cell c = g.cell_at_unchecked(p);
-  const int k = static_cast<int>(std::ceil(search_m / r)) + 1;
-  double best = std::numeric_limits<double>::infinity();
-  for (int dy = -k; dy <= k; ++dy) {
-    for (int dx = -k; dx <= k; ++dx) {
-      const Cell s{c.x + dx, c.y + dy};
-      if (!world.solid(s)) continue;
-      const double x0 = g.origin().x + s.x * r, y0 = g.origin().y + s.y * r;
-      const double gx = std::max({x0 - p.x, 0.0, p.x - (x0 + r)});
-      const double gy = std::max({y0 - p.y, 0.0, p.y - (y0 + r)});
-      best = std::min(best, std::hypot(gx, gy));
-    }
-  }
-  return best;
-}
-
 /// A cheap run of the office: few beams, a short lidar.
 LaserRunOptions cheap_options() {
   LaserRunOptions o;
@@ -139,7 +118,7 @@ TEST(LaserRun, TruePosesKeepTheClearanceAndTheSpeedLimits) {
   const double dt_s = 1.0 / o.scan_rate_hz;
   for (std::size_t k = 0; k < run->truth.size(); ++k) {
     const Pose2& p = run->truth[k].pose;
-    ASSERT_GE(distance_to_solid(office(), p.translation(), 0.3), 0.3 - 1e-9) << "scan " << k;
+    ASSERT_GE(office().distance_to_solid(p.translation(), 0.3), 0.3 - 1e-9) << "scan " << k;
     if (k == 0) continue;
     const Pose2 step = between(run->truth[k - 1].pose, p);
     EXPECT_LE(std::hypot(step.x, step.y), o.max_speed_m_per_s * dt_s + 1e-9) << "scan " << k;
@@ -310,7 +289,7 @@ TEST(LaserRun, RunsOnARealFloorPlan) {
   EXPECT_EQ(run->log.scans.size(), 151u);
   EXPECT_GT(run->tour.length_m, 60.0);  // the whole tour, of which 15 s are driven
   for (const StampedPose2& p : run->truth) {
-    EXPECT_GE(distance_to_solid(world, p.pose.translation(), 0.25), 0.25 - 1e-9);
+    EXPECT_GE(world.distance_to_solid(p.pose.translation(), 0.25), 0.25 - 1e-9);
   }
 }
 

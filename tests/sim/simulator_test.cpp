@@ -8,24 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "sim/world_fixtures.hpp"
+
 namespace tessera {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using support::from_ascii;
 
-/// A world drawn as text, top row first: '#' solid, anything else free. Cell (0, 0) is the first
-/// character of the last line.
-World from_ascii(const std::vector<std::string>& rows_top_first, double resolution_m) {
-  const int h = static_cast<int>(rows_top_first.size());
-  const int w = static_cast<int>(rows_top_first.front().size());
-  const GridGeometry g({0.0, 0.0}, resolution_m, w, h);
-  std::vector<std::uint8_t> solid(g.size(), 0);
-  for (int y = 0; y < h; ++y) {
-    const std::string& row = rows_top_first[static_cast<std::size_t>(h - 1 - y)];
-    for (int x = 0; x < w; ++x) solid[g.index_of({x, y})] = row[static_cast<std::size_t>(x)] == '#';
-  }
-  return World(g, std::move(solid));
-}
+constexpr double kPi = std::numbers::pi;
 
 // 7 x 5 cells of 1 m; the free cells (1..5, 1..3) with a block at (3, 2).
 World small_room() {

@@ -10,26 +10,15 @@
 #include <string>
 #include <vector>
 
+#include "sim/world_fixtures.hpp"
 #include "tessera/sim/builtin_world.hpp"
 
 namespace tessera {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+using support::from_ascii;
 using ::testing::HasSubstr;
-
-/// A world drawn as text, top row first: '#' solid, anything else free.
-World from_ascii(const std::vector<std::string>& rows_top_first, double resolution_m) {
-  const int h = static_cast<int>(rows_top_first.size());
-  const int w = static_cast<int>(rows_top_first.front().size());
-  const GridGeometry g({0.0, 0.0}, resolution_m, w, h);
-  std::vector<std::uint8_t> solid(g.size(), 0);
-  for (int y = 0; y < h; ++y) {
-    const std::string& row = rows_top_first[static_cast<std::size_t>(h - 1 - y)];
-    for (int x = 0; x < w; ++x) solid[g.index_of({x, y})] = row[static_cast<std::size_t>(x)] == '#';
-  }
-  return World(g, std::move(solid));
-}
 
 /// A random world: each cell solid with probability p_solid.
 World random_world(int w, int h, double resolution_m, double p_solid, Rng& rng) {
@@ -37,27 +26,6 @@ World random_world(int w, int h, double resolution_m, double p_solid, Rng& rng) 
   std::vector<std::uint8_t> solid(g.size(), 0);
   for (auto& s : solid) s = rng.uniform(0.0, 1.0) < p_solid ? 1 : 0;
   return World(g, std::move(solid));
-}
-
-/// Exact distance from p to the nearest solid cell (cells outside the grid count as solid) among
-/// those within search_m; infinity when there is none.
-double distance_to_solid(const World& world, Vec2 p, double search_m) {
-  const GridGeometry& g = world.geometry();
-  const double r = g.resolution_m();
-  const Cell c = g.cell_at_unchecked(p);
-  const int k = static_cast<int>(std::ceil(search_m / r)) + 1;
-  double best = std::numeric_limits<double>::infinity();
-  for (int dy = -k; dy <= k; ++dy) {
-    for (int dx = -k; dx <= k; ++dx) {
-      const Cell s{c.x + dx, c.y + dy};
-      if (!world.solid(s)) continue;
-      const double x0 = g.origin().x + s.x * r, y0 = g.origin().y + s.y * r;
-      const double gx = std::max({x0 - p.x, 0.0, p.x - (x0 + r)});
-      const double gy = std::max({y0 - p.y, 0.0, p.y - (y0 + r)});
-      best = std::min(best, std::hypot(gx, gy));
-    }
-  }
-  return best;
 }
 
 TEST(RoutePiece, PosesAlongALineAnArcAndATurn) {
@@ -116,7 +84,7 @@ TEST(RoomForRobot, MatchesBruteForceAndKeepsEveryPointOfARoomCellAtTheClearance)
       if (room[i] == 0) continue;
       for (const Vec2 corner : {Vec2{0, 0}, Vec2{0.1, 0}, Vec2{0, 0.1}, Vec2{0.1, 0.1}}) {
         const Vec2 p = g.origin() + Vec2{c.x * 0.1, c.y * 0.1} + corner;
-        EXPECT_GE(distance_to_solid(world, p, 1.0), clearance_m - 1e-12);
+        EXPECT_GE(world.distance_to_solid(p, 1.0), clearance_m - 1e-12);
       }
     }
   }
@@ -217,7 +185,7 @@ TEST(PlanTour, RouteIsContinuousKeepsTheClearanceAndReturnsToTheStart) {
     const int samples = std::max(1, static_cast<int>(std::ceil(p.length_m / 0.01)));
     for (int s = 0; s <= samples; ++s) {
       const Vec2 q = p.pose_at(p.extent() * s / samples).translation();
-      ASSERT_GE(distance_to_solid(office, q, o.clearance_m), o.clearance_m - 1e-9)
+      ASSERT_GE(office.distance_to_solid(q, o.clearance_m), o.clearance_m - 1e-9)
           << "piece " << k << " at " << q.x << ", " << q.y;
     }
   }

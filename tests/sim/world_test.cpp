@@ -7,27 +7,15 @@
 #include <string>
 #include <vector>
 
+#include "sim/world_fixtures.hpp"
 #include "tessera/core/rng.hpp"
 
 namespace tessera {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using support::from_ascii;
 
-/// A world drawn as text, top row first (as it looks on screen): '#' solid, anything else free.
-/// Cell (0, 0) is the first character of the LAST line.
-World from_ascii(const std::vector<std::string>& rows_top_first, double resolution_m,
-                 Vec2 origin = {0.0, 0.0}) {
-  const int h = static_cast<int>(rows_top_first.size());
-  const int w = static_cast<int>(rows_top_first.front().size());
-  const GridGeometry g(origin, resolution_m, w, h);
-  std::vector<std::uint8_t> solid(g.size(), 0);
-  for (int y = 0; y < h; ++y) {
-    const std::string& row = rows_top_first[static_cast<std::size_t>(h - 1 - y)];
-    for (int x = 0; x < w; ++x) solid[g.index_of({x, y})] = row[static_cast<std::size_t>(x)] == '#';
-  }
-  return World(g, std::move(solid), "ascii");
-}
+constexpr double kPi = std::numbers::pi;
 
 // A 10 x 8 room of 0.5 m cells with one-cell walls and a 2 x 1 pillar at cells (6..7, 4).
 // clang-format off
@@ -128,6 +116,22 @@ TEST(World, CastRayAgreesWithSamplingAlongTheRayInRandomWorlds) {
     }
     if (::testing::Test::HasFailure()) return;
   }
+}
+
+TEST(World, DistanceToSolidIsExactToWallsPillarAndGridEdge) {
+  // kRoom: walls x < 0.5 and y < 0.5, the pillar covers [3, 4] x [2, 2.5].
+  EXPECT_DOUBLE_EQ(kRoom.distance_to_solid({1.0, 1.0}, 1.0), 0.5);
+  EXPECT_DOUBLE_EQ(kRoom.distance_to_solid({3.5, 1.75}, 0.3), 0.25);  // below the pillar
+  EXPECT_NEAR(kRoom.distance_to_solid({2.6, 2.9}, 1.0), std::hypot(0.4, 0.4), 1e-12);  // corner
+  EXPECT_EQ(kRoom.distance_to_solid({0.25, 2.0}, 0.5), 0.0);  // in a wall cell
+  EXPECT_EQ(kRoom.distance_to_solid({-1.0, 2.0}, 0.5), 0.0);  // outside the grid
+}
+
+TEST(World, DistanceToSolidIsInfiniteWhenNothingSolidIsNearAndSeesTheGridEdgeAsSolid) {
+  const World open = from_ascii(std::vector<std::string>(9, "........."), 1.0);
+  EXPECT_TRUE(std::isinf(open.distance_to_solid({4.5, 4.5}, 1.0)));
+  EXPECT_DOUBLE_EQ(open.distance_to_solid({4.5, 4.5}, 4.5), 4.5);
+  EXPECT_DOUBLE_EQ(open.distance_to_solid({1.0, 4.5}, 1.0), 1.0);
 }
 
 TEST(World, ReachableFromFloodsThe4ConnectedFreeSpaceOnly) {

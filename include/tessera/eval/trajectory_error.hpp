@@ -75,6 +75,13 @@ struct AbsoluteTrajectoryError {
     const std::vector<StampedPose3>& estimate, const std::vector<StampedPose3>& reference,
     const TrajectoryErrorOptions& options = {});
 
+/// The same for planar trajectories (each pose lifted by to_pose3: z = 0, rotation about z).
+[[nodiscard]] inline Result<AbsoluteTrajectoryError> absolute_trajectory_error(
+    const std::vector<StampedPose2>& estimate, const std::vector<StampedPose2>& reference,
+    const TrajectoryErrorOptions& options = {}) {
+  return absolute_trajectory_error(to_pose3(estimate), to_pose3(reference), options);
+}
+
 struct RelativePoseError {
   double delta_s = 0.0;
   ErrorStatistics trans_m;  // count = pose pairs compared

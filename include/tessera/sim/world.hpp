@@ -42,6 +42,13 @@ class World {
   /// the grid count as solid). Cost: O(cells the rectangle overlaps).
   [[nodiscard]] bool any_solid_in(Vec2 lo_m, Vec2 hi_m) const;
 
+  /// Euclidean distance from p_m to the nearest point of a solid cell (cells outside the grid
+  /// count as solid), exact whenever that distance is at most search_m. Only the cells within
+  /// ceil(search_m / resolution) + 1 of p_m's cell are examined, so a larger result only says "more
+  /// than search_m"; infinity when none of them is solid. 0 inside a solid cell.
+  /// Precondition: search_m >= 0. Cost: O((search_m / resolution)^2).
+  [[nodiscard]] double distance_to_solid(Vec2 p_m, double search_m) const;
+
   /// The part of this world inside the rectangle [lo_m, hi_m], at the same resolution: the fine
   /// cells the rectangle overlaps, so the new origin is lo_m snapped down to a cell corner. Cells
   /// of the rectangle outside this grid are solid. Empty world when the rectangle is empty.

@@ -4,6 +4,7 @@
 // (nav2_map_server map_io.cpp loadMapFromFile) can be applied exactly. Row 0 is the top row.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "tessera/core/result.hpp"
@@ -20,6 +21,11 @@ struct RawImage {
 
   [[nodiscard]] bool has_alpha() const { return !alpha.empty(); }
 };
+
+/// Empty when the PNG's chunk structure is sound (every chunk's CRC checked, IEND present); else
+/// what is wrong. Lets readers report damaged files themselves instead of libpng printing them.
+/// Precondition: `bytes` starts with the PNG signature.
+[[nodiscard]] std::string png_structure_problem(const std::string& bytes);
 
 /// Reads a PGM (own reader) or any image OpenCV decodes (PNG, BMP, ...). 16-bit samples are scaled
 /// to 8 bits. kInput errors name the file.

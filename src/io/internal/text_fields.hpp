@@ -1,6 +1,7 @@
 #pragma once
-// Private helpers for the line-oriented text readers (CARMEN logs, relations, g2o): walking a file
-// line by line and splitting a line into whitespace-separated fields without copying.
+// Private helpers for the line-oriented text readers (CARMEN logs, relations, g2o, TUM RGB-D lists
+// and calibration files): walking a file line by line, splitting a line into whitespace-separated
+// fields without copying, and the record loop all of them share (for_each_record).
 #include <charconv>
 #include <numbers>
 #include <string_view>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "tessera/core/angle.hpp"
+#include "tessera/core/result.hpp"
 
 namespace tessera::io_internal {
 
@@ -52,6 +54,26 @@ inline void split_fields(std::string_view line, std::vector<std::string_view>& f
 /// True when the line is blank or a '#' comment.
 [[nodiscard]] inline bool is_blank_or_comment(const std::vector<std::string_view>& fields) {
   return fields.empty() || fields.front().front() == '#';
+}
+
+/// The record loop of the line-oriented readers: calls on_record(line_no, fields) for each line of
+/// `text` that is neither blank nor a '#' comment, in order, with its 1-based line number and its
+/// fields (views into text, valid during the call). Stops at the first call that returns an error
+/// and returns that error; the readers build their "file:line: ..." messages in on_record.
+/// OnRecord: Status(int line_no, const std::vector<std::string_view>& fields).
+template <typename OnRecord>
+[[nodiscard]] Status for_each_record(std::string_view text, OnRecord&& on_record) {
+  LineCursor cursor(text);
+  std::string_view line;
+  int line_no = 0;
+  std::vector<std::string_view> fields;
+  while (cursor.next(line, line_no)) {
+    split_fields(line, fields);
+    if (is_blank_or_comment(fields)) continue;
+    Status status = on_record(line_no, static_cast<const std::vector<std::string_view>&>(fields));
+    if (!status) return status;
+  }
+  return Ok{};
 }
 
 /// Parses a whole field as a decimal int (no trailing garbage).

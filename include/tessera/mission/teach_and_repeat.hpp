@@ -1,0 +1,172 @@
+#pragma once
+// The two-stage experiment of the Fusion SLAM thesis (../shared/seeds/002, section 5.1.1, Table
+// 5.1) in the simulator, with the thesis' weaknesses fixed (section 6.2):
+//  TEACH (Table 5.1 steps 1-7): the robot is driven open loop (a perfect operator on the true pose)
+//    along a route from the start to the goal, stopped in a firing field at the goal to capture the
+//    goal image node (its true pose is the "taught goal pose"), and driven back to the start, where
+//    it turns to face the route again; all the while the Fusion SLAM (fusion/fusion_slam.hpp) maps
+//    cells and image nodes from drifting wheel odometry (sensors/thesis_odometry.hpp).
+//  REPEAT (steps 8-9): from the start the robot confirms the start node (an image-node search),
+//    then navigates by itself to the goal cell: the wavefront over the learned cells' traversed
+//    adjacency (nav/wavefront.hpp), shortened to a polyline that does not zigzag
+//    (nav/cell_polyline.hpp) and followed by pure pursuit (nav/path_follower.hpp) on the SLAM's
+//    drift-corrected estimate, replanned after each correction; in the goal cell the image-node
+//    search drives to the goal node's pose, turns the neck to its angle and confirms by matching,
+//    driving again onto the node when the match shows an offset (6.2 item 4).
+// Frames are rendered only where the SLAM asks for one (firing fields) and for the search.
+// Deterministic for a seed. No I/O.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessera/core/pose2.hpp"
+#include "tessera/core/result.hpp"
+#include "tessera/core/rng.hpp"
+#include "tessera/core/stamped_pose2.hpp"
+#include "tessera/core/vec2.hpp"
+#include "tessera/fusion/fusion_slam.hpp"
+#include "tessera/nav/path_follower.hpp"
+#include "tessera/sensors/odometry_model.hpp"
+#include "tessera/sensors/thesis_odometry.hpp"
+#include "tessera/sim/poster.hpp"
+#include "tessera/sim/rgbd_camera.hpp"
+#include "tessera/sim/wall_faces.hpp"
+#include "tessera/sim/world.hpp"
+
+namespace tessera {
+
+struct TeachAndRepeatOptions {
+  fusion::FusionSlamOptions slam;
+  /// Wheel odometry drift: the thesis' (Table 5.4) by default.
+  OdometryErrorOptions odometry = thesis_fusion_odometry();
+  /// The taught route's clearance from walls (robot radius plus margin).
+  double clearance_m = 0.3;
+  /// Driving limits for the operator (teach) and the navigation (repeat).
+  double max_speed_m_per_s = 0.3;
+  double max_turn_rate_rad_per_s = 0.5;
+  /// Simulation step and how many steps between two SLAM updates (odometry events).
+  double control_period_s = 0.01;
+  int steps_per_update = 10;
+  /// The neck's pan angle while driving (0: the camera looks ahead).
+  double neck_pan_rad = 0.0;
+  /// At each capture the neck pans to these angles and a frame is taken at each (the thesis'
+  /// robot has a pan neck, section 3.1.3): with 57-degree views, -1, 0 and +1 rad would see about
+  /// 170 degrees, so a poster beside the route is in some view; five angles 0.7 rad apart see about
+  /// 220 degrees with overlapping views. Ours.
+  std::vector<double> capture_neck_angles_rad = {-1.4, -0.7, 0.0, 0.7, 1.4};
+  /// Navigation (repeat): pure pursuit limits and gains.
+  PathFollowerOptions follower;
+  /// Image-node search: the robot counts as on the node once a confirming match shows it within
+  /// this distance of the node's pose; it drives onto the node again at most max_search_drives
+  /// times.
+  double search_tolerance_m = 0.03;
+  int max_search_drives = 3;
+  /// A drive that lasts longer than this fails the run (runtime error).
+  double max_drive_s = 600.0;
+};
+
+/// Empty when usable; otherwise names the field and the rule it breaks.
+[[nodiscard]] std::optional<std::string> validate(const TeachAndRepeatOptions& o);
+
+/// A drivable route in `world` from `from_m` to `to_m`: a shortest path over the cells at least
+/// clearance_m from every wall (sim/tour.hpp room_for_robot; 8-connected, no corner cutting),
+/// shortened by string pulling. Starts with from_m and ends with to_m. Input error when either end
+/// has no room or they are not connected. Cost: one Dijkstra search over the grid.
+[[nodiscard]] Result<std::vector<Vec2>> plan_route(const World& world, Vec2 from_m, Vec2 to_m,
+                                                   double clearance_m);
+
+/// A start and goal for the experiment: the start a random room cell of the largest component, the
+/// goal the room cell whose route length from the start is nearest route_length_m (the thesis'
+/// route: about 7.4 m + 2.3 m). The start heading faces the route's first leg.
+struct StartAndGoal {
+  Pose2 start;
+  Vec2 goal_m;
+  double route_length_m = 0.0;
+};
+[[nodiscard]] Result<StartAndGoal> choose_start_and_goal(const World& world, double clearance_m,
+                                                         double route_length_m, Rng& rng);
+
+/// Posters for the experiment's world: `layers` passes of sim/poster.hpp's place_posters (seeds
+/// seed, seed + 1, ...), a poster of a later pass kept only where it does not overlap (with
+/// margin_m) one already on its face. One pass hangs at most one poster per wall face, which leaves
+/// long walls mostly blank; the thesis' robot drove past desks and cabinets. Deterministic.
+[[nodiscard]] std::vector<Poster> place_poster_layers(const std::vector<WallFace>& faces,
+                                                      const std::vector<WallTexture>& textures,
+                                                      const PosterPlacementOptions& options,
+                                                      std::uint64_t seed, int layers);
+
+/// Per run, the figures of the thesis' Tables 5.2-5.4 and the bars.
+struct TeachAndRepeatRun {
+  std::uint64_t seed = 0;
+  Pose2 start;
+  Vec2 goal_m;
+  std::vector<Vec2> route_m;            // the taught route, start to goal
+  double taught_route_length_m = 0.0;
+  Pose2 taught_goal_pose;               // true pose at the goal node's capture
+  std::size_t goal_node = 0;
+  std::size_t goal_cell = 0;
+  std::size_t start_cell = 0;
+  // Repeat.
+  bool reached_goal_cell = false;
+  double goal_cell_distance_m = 0.0;   // true distance to the goal cell's true centre at arrival
+  Pose2 final_pose;                     // true pose at the end of the search
+  double final_error_x_m = 0.0;         // final_pose - taught_goal_pose, map (= world) frame
+  double final_error_y_m = 0.0;
+  double final_error_m = 0.0;
+  double final_heading_error_rad = 0.0;
+  double navigation_path_m = 0.0;       // driven from the start until the goal cell was reached
+  double shortest_cell_path_m = 0.0;    // wavefront path over the learned cells, centre to centre
+  double path_ratio = 0.0;
+  double odometry_error_at_goal_m = 0.0;   // |odometry - truth| at the end (uncorrected)
+  double estimate_error_at_goal_m = 0.0;   // |estimate - truth| at the end
+  // Drift correction: ATE (aligned, TUM evaluate_ate.py) of the pose-graph trajectory after the
+  // last optimisation and of odometry alone, against the truth at the same stamps.
+  double ate_corrected_m = 0.0;
+  double ate_odometry_m = 0.0;
+  // Image-node search.
+  int search_trials = 0;
+  int search_successes = 0;
+  int search_captures = 0;              // confirmation captures, all searches
+  struct Search {
+    std::size_t node = 0;
+    bool confirmed = false;
+    int captures = 0;
+    std::string last_reason;            // the last confirmation's matcher reason
+    double offset_m = 0.0;              // the last confirming match's distance to the node pose
+    double true_offset_m = 0.0;         // the robot's true distance to the node's true pose
+  };
+  std::vector<Search> searches;
+  // The map.
+  std::size_t cells = 0;
+  std::size_t image_nodes = 0;
+  std::size_t pose_nodes = 0;
+  fusion::FusionStatistics slam;
+  fusion::FusionStatistics slam_after_teach;  // the statistics when the teach stage ended
+  double duration_s = 0.0;              // simulated time, both stages
+  // Paths for pictures (map frame): estimates while teaching and repeating, and the truth.
+  std::vector<Vec2> taught_path_m;
+  std::vector<Vec2> repeated_path_m;
+  std::vector<Vec2> true_path_m;
+  std::vector<StampedPose2> corrected_trajectory;  // pose-graph nodes after the last optimisation
+};
+
+struct TeachAndRepeatResult {
+  TeachAndRepeatRun run;
+  /// The SLAM at the end (its map and image nodes, for pictures).
+  fusion::FusionSlam slam;
+};
+
+/// Runs the experiment once in `camera`'s world from `start` to `goal_m`. Input errors: invalid
+/// options, no route. Runtime errors: the teach route loses the map (no goal node could be
+/// captured), a drive that exceeds max_drive_s. `progress` (optional) gets a short text per stage.
+/// Deterministic for (camera, options, start, goal, seed).
+[[nodiscard]] Result<TeachAndRepeatResult> run_teach_and_repeat(
+    const RgbdCamera& camera, const TeachAndRepeatOptions& options, const Pose2& start,
+    Vec2 goal_m, std::uint64_t seed,
+    const std::function<void(const std::string&)>& progress = {});
+
+}  // namespace tessera

@@ -1,0 +1,121 @@
+// The thesis' two-stage experiment (Table 5.1) in the simulator: a short teach-and-repeat run in the
+// built-in office with real photographs as posters meets the bars; routes and start/goal
+// choice; bad options.
+#include "tessera/mission/teach_and_repeat.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+#include "support/data.hpp"
+#include "tessera/io/wall_textures.hpp"
+#include "tessera/sim/builtin_world.hpp"
+#include "tessera/sim/poster.hpp"
+#include "tessera/sim/wall_faces.hpp"
+
+namespace tessera {
+namespace {
+
+const std::filesystem::path kPhotos = "rgbd/rtabmap_loop_samples/images";
+
+/// The office with posters from RTAB-Map's loop-closure photos on most walls (seeded).
+Result<RgbdCamera> office_camera(std::uint64_t poster_seed) {
+  const World world = builtin_world("office", 0.05);
+  const Result<std::vector<std::filesystem::path>> files =
+      list_texture_images(support::data_path(kPhotos));
+  if (!files) return files.error();
+  const std::vector<std::filesystem::path> some(files->begin(),
+                                                files->begin() + std::min<std::ptrdiff_t>(40, std::ssize(*files)));
+  Result<std::vector<WallTexture>> textures = read_wall_textures(some);
+  if (!textures) return textures.error();
+  const std::vector<WallFace> faces = find_wall_faces(world).faces;
+  PosterPlacementOptions placement;
+  placement.probability = 0.9;
+  std::vector<Poster> posters = place_poster_layers(faces, *textures, placement, poster_seed, 3);
+  return RgbdCamera::create(world, RgbdCameraOptions{}, std::move(*textures), std::move(posters));
+}
+
+TEST(TeachAndRepeat, ShortRunInTheOfficeMeetsTheBars) {
+  TESSERA_REQUIRE_DATA(support::data_path(kPhotos));
+  const Result<RgbdCamera> camera = office_camera(7);
+  ASSERT_TRUE(camera) << camera.error().message;
+  Rng rng(11);
+  const Result<StartAndGoal> sg =
+      choose_start_and_goal(camera->world(), 0.3, /*route_length_m=*/7.0, rng);
+  ASSERT_TRUE(sg) << sg.error().message;
+  TeachAndRepeatOptions options;
+  options.capture_neck_angles_rad = {-1.0, 0.0, 1.0};  // three views per capture keep the test short
+  const Result<TeachAndRepeatResult> r =
+      run_teach_and_repeat(*camera, options, sg->start, sg->goal_m, /*seed=*/3);
+  ASSERT_TRUE(r) << r.error().message;
+  const TeachAndRepeatRun& run = r->run;
+  std::cout << "route " << run.taught_route_length_m << " m, cells " << run.cells << ", nodes "
+            << run.image_nodes << ", matches " << run.slam.matches_accepted << "/"
+            << run.slam.matches_tried << ", final error " << run.final_error_m << " m, ratio "
+            << run.path_ratio << ", ATE " << run.ate_corrected_m << " vs " << run.ate_odometry_m
+            << ", search " << run.search_successes << "/" << run.search_trials << ", time "
+            << run.duration_s << " s simulated\n";
+  EXPECT_TRUE(run.reached_goal_cell);
+  EXPECT_LE(run.final_error_m, 0.1);
+  EXPECT_LE(run.path_ratio, 1.15);
+  EXPECT_GT(run.path_ratio, 0.5);
+  EXPECT_LE(5.0 * run.ate_corrected_m, run.ate_odometry_m);
+  EXPECT_EQ(run.search_successes, run.search_trials);
+  EXPECT_GE(run.search_trials, 2);
+  EXPECT_GT(run.slam.matches_accepted, 0);
+  EXPECT_GT(run.image_nodes, 5u);
+  EXPECT_EQ(run.corrected_trajectory.size(), r->slam.graph_nodes());
+}
+
+TEST(TeachAndRepeat, RouteKeepsClearanceAndEndsAtTheGoal) {
+  const World world = builtin_world("office", 0.05);
+  Rng rng(5);
+  const Result<StartAndGoal> sg = choose_start_and_goal(world, 0.3, 6.0, rng);
+  ASSERT_TRUE(sg) << sg.error().message;
+  const Result<std::vector<Vec2>> route =
+      plan_route(world, {sg->start.x, sg->start.y}, sg->goal_m, 0.3);
+  ASSERT_TRUE(route) << route.error().message;
+  ASSERT_GE(route->size(), 2u);
+  EXPECT_DOUBLE_EQ(route->front().x, sg->start.x);
+  EXPECT_DOUBLE_EQ(route->back().y, sg->goal_m.y);
+  // Every point of every leg keeps 0.3 m from walls (sampled every 2 cm, 16 rays of 0.29 m).
+  for (std::size_t i = 1; i < route->size(); ++i) {
+    const Vec2 a = (*route)[i - 1], b = (*route)[i];
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    for (double s = 0.0; s <= len; s += 0.02) {
+      const Vec2 p{a.x + (b.x - a.x) * s / len, a.y + (b.y - a.y) * s / len};
+      for (int k = 0; k < 16; ++k) {
+        EXPECT_GE(world.cast_ray(p, k * std::numbers::pi / 8, 1.0), 0.25) << "leg " << i;
+      }
+    }
+  }
+}
+
+TEST(TeachAndRepeat, GoalBehindAWallThatLeavesNoRoomIsAnInputError) {
+  const World world = builtin_world("office", 0.05);
+  Rng rng(5);
+  const Result<StartAndGoal> sg = choose_start_and_goal(world, 0.3, 6.0, rng);
+  ASSERT_TRUE(sg);
+  const Result<std::vector<Vec2>> route =
+      plan_route(world, {sg->start.x, sg->start.y}, {-5.0, -5.0}, 0.3);
+  ASSERT_FALSE(route);
+  EXPECT_EQ(route.error().kind, ErrorKind::kInput);
+  EXPECT_NE(route.error().message.find("goal"), std::string::npos);
+}
+
+TEST(TeachAndRepeat, InvalidOptionsNameTheField) {
+  TeachAndRepeatOptions o;
+  EXPECT_FALSE(validate(o));
+  o.neck_pan_rad = 2.0;
+  ASSERT_TRUE(validate(o));
+  EXPECT_NE(validate(o)->find("neck_pan_rad"), std::string::npos);
+  o = {};
+  o.slam.max_candidates = 0;
+  ASSERT_TRUE(validate(o));
+  EXPECT_NE(validate(o)->find("max_candidates"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace tessera

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <filesystem>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -157,6 +158,55 @@ class SlamCommand : public Command {
   std::optional<double> cell_m_;  // default: 0.05 m for a log, the world's cell for a simulated run
   bool no_loop_closure_ = false;
   bool quiet_ = false;
+};
+
+/// tessera fusion: the thesis' Fusion SLAM on RGB-D data (fusion/). One mode per input: --pair DIR
+/// (one frame pair's motion or the reason it is refused), --sequence DIR (a TUM RGB-D folder),
+/// --world FILE (a simulated run) and --teach-and-repeat --world FILE (thesis Table 5.1).
+class FusionCommand : public Command {
+ public:
+  explicit FusionCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  enum class Mode { kNone, kPair, kWorld, kTeachAndRepeat, kSequence };
+  struct Options {
+    std::optional<std::filesystem::path> pair;  // --pair: a frame pair folder
+    std::string features = "orb";               // parsed in run(): unknown names are exit 3
+    std::filesystem::path out = "out/fusion";
+    std::uint64_t seed = 1;
+    bool quiet = false;
+    // --world / --teach-and-repeat: simulated runs in a floor plan (mission/teach_and_repeat).
+    bool teach_and_repeat = false;
+    std::optional<std::filesystem::path> sequence;  // --sequence: a TUM RGB-D folder
+    int runs = 1;
+    std::optional<std::filesystem::path>
+        textures;                      // default: <data>/rgbd/rtabmap_loop_samples/images
+    std::optional<std::string> start;  // "x,y" metres; default: chosen by --seed
+    std::optional<std::string> goal;
+    double route_length_m = 9.7;                         // the thesis' route: 7.4 m + 2.3 m
+    double duration_s = 600.0;                           // --world: the mapping run's time limit
+    std::optional<std::filesystem::path> save_sequence;  // --world: the run as a TUM folder
+    // --world: the neck sweeps while the robot drives, fast enough that a firing-field visit
+    // (0.3 m at 0.3 m/s) sees several directions, as wide as the teach stage's five capture
+    // angles (mission/teach_and_repeat.hpp). Ours; the period is measured in decision 0010.
+    double neck_sweep_rad = 1.4;
+    double neck_period_s = 3.0;
+  };
+  struct SimulatedSetup;
+  [[nodiscard]] Mode mode() const;
+  [[nodiscard]] int run_pair() const;
+  [[nodiscard]] Result<SimulatedSetup> load_simulated_setup() const;
+  [[nodiscard]] std::string world_label() const;
+  [[nodiscard]] nlohmann::json simulated_options_json(const SimulatedSetup& setup,
+                                                      const std::string& mode) const;
+  [[nodiscard]] nlohmann::json world_json(const World& world) const;
+  [[nodiscard]] int run_teach_and_repeat_table() const;
+  [[nodiscard]] int run_mapping() const;
+  [[nodiscard]] int run_sequence() const;
+
+  Options options_;
+  WorldSource world_;
 };
 
 }  // namespace tessera::cli

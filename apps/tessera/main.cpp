@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   PosegraphCommand posegraph(app);
   EvalCommand eval(app);
   SlamCommand slam(app);
+  FusionCommand fusion(app);
 
   try {
     app.parse(argc, argv);
@@ -34,5 +35,6 @@ int main(int argc, char** argv) {
   if (posegraph.parsed()) return posegraph.run();
   if (eval.parsed()) return eval.run();
   if (slam.parsed()) return slam.run();
+  if (fusion.parsed()) return fusion.run();
   return kExitUsage;
 }

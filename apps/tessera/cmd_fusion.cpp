@@ -401,7 +401,7 @@ Status write_slam_outputs(const std::filesystem::path& out, const std::string& s
 
 void print_slam_summary(const std::string& what, fusion::FeatureType type,
                         const fusion::FusionSlam& slam, const nlohmann::json& trajectory,
-                        const std::filesystem::path& out) {
+                        const std::filesystem::path& out, bool wrote_truth) {
   const fusion::FusionStatistics& st = slam.statistics();
   std::string ate;
   if (trajectory.contains("ate_rmse_m")) {
@@ -411,7 +411,8 @@ void print_slam_summary(const std::string& what, fusion::FeatureType type,
   fmt::print("fusion: {} ({}): {} cells, {} image nodes, {} of {} matches accepted{}\n", what,
              fusion::to_string(type), slam.map().cell_count(), slam.image_nodes().size(),
              st.matches_accepted, st.matches_tried, ate);
-  fmt::print("outputs: {}/report.json\n", out.string());
+  fmt::print("outputs: {}/hex_map.svg hex_map.png trajectory.txt{} report.json\n", out.string(),
+             wrote_truth ? " truth.txt" : "");
 }
 
 }  // namespace
@@ -622,7 +623,11 @@ int FusionCommand::run_teach_and_repeat_table() const {
           r.final_error_m, r.path_ratio, r.ate_corrected_m, r.ate_odometry_m, r.search_successes,
           r.search_trials);
     }
-    fmt::print("outputs: {}/report.json\n", options_.out.string());
+    std::string names;
+    for (const auto& file : files) names += file.first + " ";
+    for (std::size_t k = 0; k < results.size(); ++k)
+      names += fmt::format("hex_map_run{}.png ", k + 1);
+    fmt::print("outputs: {}/{}report.json\n", options_.out.string(), names);
   }
   return kExitOk;
 }
@@ -723,7 +728,7 @@ int FusionCommand::run_mapping() const {
   }
   if (!options_.quiet)
     print_slam_summary("world " + world_label(), setup->type, slam, report["trajectory"],
-                       options_.out);
+                       options_.out, !truth.empty());
   return kExitOk;
 }
 
@@ -798,7 +803,7 @@ int FusionCommand::run_sequence() const {
   }
   if (!options_.quiet) {
     print_slam_summary("sequence " + options_.sequence->string(), *type, slam, report["trajectory"],
-                       options_.out);
+                       options_.out, !truth.empty());
   }
   return kExitOk;
 }

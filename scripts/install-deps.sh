@@ -8,6 +8,9 @@ packages=(
   libeigen3-dev libceres-dev libopencv-dev libnanoflann-dev libcli11-dev libfmt-dev
   nlohmann-json3-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
   gcc-arm-none-eabi libnewlib-arm-none-eabi
+  # The C++ headers for arm-none-eabi (<cstddef>, <cstdint>, ...): only a Recommends of
+  # gcc-arm-none-eabi, so --no-install-recommends leaves them out and make bob-firmware fails.
+  libstdc++-arm-none-eabi-dev
 )
 
 missing=()

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Runs `tessera fusion --teach-and-repeat` (the Fusion SLAM thesis' two-stage experiment, Table 5.1,
-in the simulator with the thesis' odometry drift) in three shared floor plans, for each feature type
-and several seeds, and writes the Markdown tables of docs/fusion-teach-and-repeat.md (per run, as the
-thesis' Tables 5.2-5.4: reached goal cell, final error in x and y, distance, path ratio, ATE with
-drift correction vs odometry alone, image-node search).
+in the simulator with the thesis' odometry drift) in the built-in office and three shared floor
+plans, for each feature type and several seeds, and writes the Markdown tables of
+docs/fusion-teach-and-repeat.md (per run, as the thesis' Tables 5.2-5.4: reached goal cell, final
+error in x and y, distance, path ratio, ATE with drift correction vs odometry alone, image-node
+search).
 
 With --mapping it runs `tessera fusion --world` instead (one open-loop mapping run start -> goal ->
 start per seed, scored against its ground truth) and writes the mapping table.
@@ -27,6 +28,8 @@ PHOTOS = DATA / "rgbd" / "rtabmap_loop_samples" / "images"
 WORLDS = [
     ("Built-in office (16 x 12 m)", ["--builtin", "office"]),
     ("Autolab (Stage, 20 x 20 m)", ["--world", str(DATA / "maps/stage_bitmaps/autolab.world")]),
+    ("UoA robotics lab (Stage, 6.3 x 15.7 m)",
+     ["--world", str(DATA / "maps/stage_bitmaps/uoa_robotics_lab.world")]),
     ("Hospital section, west half (Stage)",
      ["--world", str(DATA / "maps/stage_bitmaps/hospital_section.png"), "--map-resolution-m",
       "0.04", "--crop", "0,0,20,17.72"]),

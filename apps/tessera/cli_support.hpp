@@ -21,6 +21,11 @@ inline constexpr int kExitRuntime = 4;
 /// Prints "tessera: <message>" on stderr and returns exit_code(e).
 int report_error(const Error& e);
 
+/// Wall-clock seconds since t0 (the `timing.wall_s` of every report).
+[[nodiscard]] inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 /// True when stderr is a terminal (progress lines are shown only there).
 [[nodiscard]] bool stderr_is_terminal();
 

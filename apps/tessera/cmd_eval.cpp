@@ -41,10 +41,6 @@ int write_report(const std::optional<std::filesystem::path>& out, const nlohmann
   return kExitOk;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 EvalCommand::EvalCommand(CLI::App& app) {

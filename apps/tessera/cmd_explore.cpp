@@ -94,8 +94,7 @@ int ExploreCommand::run() const {
                                   100.0 * p.coverage, p.frontier_size));
       });
   progress.finish();
-  const double wall_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double wall_s = seconds_since(t0);
   if (!result) {
     // Name the world in input errors ("maps/lab.yaml: start (3, 4) is inside an obstacle").
     Error e = result.error();

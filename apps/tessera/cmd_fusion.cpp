@@ -41,10 +41,6 @@
 namespace tessera::cli {
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 nlohmann::json transform_json(const Eigen::Isometry3d& T) {
   const Eigen::Quaterniond q(T.linear());
   nlohmann::json rows = nlohmann::json::array();
@@ -266,6 +262,18 @@ nlohmann::json pose_json(const Pose2& p) {
   return {{"x_m", p.x}, {"y_m", p.y}, {"theta_rad", p.theta}};
 }
 
+/// The SLAM's counters, as both the teach-and-repeat rows and the --world / --sequence reports give
+/// them.
+nlohmann::json statistics_json(const fusion::FusionStatistics& st) {
+  return {{"frames_rejected", st.frames_rejected},
+          {"node_check_failures", st.node_check_failures},
+          {"matches_tried", st.matches_tried},
+          {"matches_accepted", st.matches_accepted},
+          {"matches_rejected", st.matches_tried - st.matches_accepted},
+          {"match_rejections", st.match_rejections},
+          {"optimisations", st.optimisations}};
+}
+
 nlohmann::json run_json(const TeachAndRepeatRun& r) {
   nlohmann::json searches = nlohmann::json::array();
   for (const TeachAndRepeatRun::Search& s : r.searches) {
@@ -276,45 +284,37 @@ nlohmann::json run_json(const TeachAndRepeatRun& r) {
                         {"offset_m", s.offset_m},
                         {"true_offset_m", s.true_offset_m}});
   }
-  nlohmann::json rejections = nlohmann::json::object();
-  for (const auto& [reason, n] : r.slam.match_rejections) rejections[reason] = n;
-  nlohmann::json checks = nlohmann::json::object();
-  for (const auto& [reason, n] : r.slam.node_check_failures) checks[reason] = n;
-  return {{"seed", r.seed},
-          {"start", pose_json(r.start)},
-          {"goal_m", {r.goal_m.x, r.goal_m.y}},
-          {"taught_route_length_m", r.taught_route_length_m},
-          {"taught_goal_pose", pose_json(r.taught_goal_pose)},
-          {"reached_goal_cell", r.reached_goal_cell},
-          {"goal_cell_distance_m", r.goal_cell_distance_m},
-          {"final_pose", pose_json(r.final_pose)},
-          {"final_error_x_m", r.final_error_x_m},
-          {"final_error_y_m", r.final_error_y_m},
-          {"final_error_m", r.final_error_m},
-          {"final_heading_error_deg", rad_to_deg(r.final_heading_error_rad)},
-          {"navigation_path_m", r.navigation_path_m},
-          {"shortest_cell_path_m", r.shortest_cell_path_m},
-          {"path_ratio", r.path_ratio},
-          {"odometry_error_at_goal_m", r.odometry_error_at_goal_m},
-          {"estimate_error_at_goal_m", r.estimate_error_at_goal_m},
-          {"ate_corrected_m", r.ate_corrected_m},
-          {"ate_odometry_m", r.ate_odometry_m},
-          {"ate_ratio", r.ate_corrected_m > 0.0 ? r.ate_odometry_m / r.ate_corrected_m : 0.0},
-          {"search_trials", r.search_trials},
-          {"search_successes", r.search_successes},
-          {"searches", searches},
-          {"cells", r.cells},
-          {"image_nodes", r.image_nodes},
-          {"pose_nodes", r.pose_nodes},
-          {"frames", r.slam.frames},
-          {"frames_rejected", r.slam.frames_rejected},
-          {"node_check_failures", checks},
-          {"matches_tried", r.slam.matches_tried},
-          {"matches_accepted", r.slam.matches_accepted},
-          {"matches_rejected", r.slam.matches_tried - r.slam.matches_accepted},
-          {"match_rejections", rejections},
-          {"optimisations", r.slam.optimisations},
-          {"simulated_s", r.duration_s}};
+  nlohmann::json row = {
+      {"seed", r.seed},
+      {"start", pose_json(r.start)},
+      {"goal_m", {r.goal_m.x, r.goal_m.y}},
+      {"taught_route_length_m", r.taught_route_length_m},
+      {"taught_goal_pose", pose_json(r.taught_goal_pose)},
+      {"reached_goal_cell", r.reached_goal_cell},
+      {"goal_cell_distance_m", r.goal_cell_distance_m},
+      {"final_pose", pose_json(r.final_pose)},
+      {"final_error_x_m", r.final_error_x_m},
+      {"final_error_y_m", r.final_error_y_m},
+      {"final_error_m", r.final_error_m},
+      {"final_heading_error_deg", rad_to_deg(r.final_heading_error_rad)},
+      {"navigation_path_m", r.navigation_path_m},
+      {"shortest_cell_path_m", r.shortest_cell_path_m},
+      {"path_ratio", r.path_ratio},
+      {"odometry_error_at_goal_m", r.odometry_error_at_goal_m},
+      {"estimate_error_at_goal_m", r.estimate_error_at_goal_m},
+      {"ate_corrected_m", r.ate_corrected_m},
+      {"ate_odometry_m", r.ate_odometry_m},
+      {"ate_ratio", r.ate_corrected_m > 0.0 ? r.ate_odometry_m / r.ate_corrected_m : 0.0},
+      {"search_trials", r.search_trials},
+      {"search_successes", r.search_successes},
+      {"searches", searches},
+      {"cells", r.cells},
+      {"image_nodes", r.image_nodes},
+      {"pose_nodes", r.pose_nodes},
+      {"frames", r.slam.frames},
+      {"simulated_s", r.duration_s}};
+  row.update(statistics_json(r.slam));
+  return row;
 }
 
 HexMapPicture picture_of_slam(const fusion::FusionSlam& slam, const World* world) {
@@ -343,23 +343,13 @@ HexMapPicture picture_of(const TeachAndRepeatResult& result, const World& world)
 }
 
 nlohmann::json slam_json(const fusion::FusionSlam& slam, std::size_t frames, int frames_loaded) {
-  const fusion::FusionStatistics& st = slam.statistics();
-  nlohmann::json rejections = nlohmann::json::object();
-  for (const auto& [reason, n] : st.match_rejections) rejections[reason] = n;
-  nlohmann::json checks = nlohmann::json::object();
-  for (const auto& [reason, n] : st.node_check_failures) checks[reason] = n;
-  return {{"frames_in_sequence", frames},
-          {"frames_loaded", frames_loaded},
-          {"frames_rejected", st.frames_rejected},
-          {"node_check_failures", checks},
-          {"cells", slam.map().cell_count()},
-          {"image_nodes", slam.image_nodes().size()},
-          {"pose_nodes", slam.map().pose_nodes().size()},
-          {"matches_tried", st.matches_tried},
-          {"matches_accepted", st.matches_accepted},
-          {"matches_rejected", st.matches_tried - st.matches_accepted},
-          {"match_rejections", rejections},
-          {"optimisations", st.optimisations}};
+  nlohmann::json j = {{"frames_in_sequence", frames},
+                      {"frames_loaded", frames_loaded},
+                      {"cells", slam.map().cell_count()},
+                      {"image_nodes", slam.image_nodes().size()},
+                      {"pose_nodes", slam.map().pose_nodes().size()}};
+  j.update(statistics_json(slam.statistics()));
+  return j;
 }
 
 /// The ATE (aligned, as TUM's evaluate_ate.py) of the corrected trajectory and of odometry alone at

@@ -47,8 +47,7 @@ int PosegraphCommand::run() const {
   const Result<slam::OptimizeSummary> optimized = slam::optimize(*graph, options);
   if (!optimized) return report_error(optimized.error());
   const slam::OptimizeSummary& s = *optimized;
-  const double wall_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall_s = seconds_since(start);
 
   const nlohmann::json report = {{"tessera_version", TESSERA_VERSION},
                                  {"command", "posegraph optimize"},

@@ -31,10 +31,6 @@
 namespace tessera::cli {
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 /// Stamps may go backwards in real logs: the span is max - min.
 double data_duration_s(const LaserLog& log) {
   if (log.scans.empty()) return 0.0;

@@ -93,12 +93,6 @@ std::vector<Vec2> string_pull(const World& world, const std::vector<std::uint8_t
   return out;
 }
 
-double polyline_m(const std::vector<Vec2>& p) {
-  double s = 0.0;
-  for (std::size_t i = 1; i < p.size(); ++i) s += std::hypot(p[i].x - p[i - 1].x, p[i].y - p[i - 1].y);
-  return s;
-}
-
 double ate_rmse(const std::vector<StampedPose2>& estimate, const std::vector<StampedPose2>& truth) {
   const Result<AbsoluteTrajectoryError> ate = absolute_trajectory_error(estimate, truth);
   return ate ? ate->trans_m.rmse : std::numeric_limits<double>::quiet_NaN();
@@ -183,12 +177,12 @@ Result<StartAndGoal> choose_start_and_goal(const World& world, double clearance_
   const Result<std::vector<Vec2>> route =
       plan_route(world, {start->x, start->y}, out.goal_m, clearance_m);
   if (!route) return route.error();
-  if (route->size() < 2 || polyline_m(*route) < 1.0) {
+  if (route->size() < 2 || polyline_length_m(*route) < 1.0) {
     return input_error("start and goal: the robot's room around the start is too small for a route");
   }
   const Vec2 first = (*route)[1];
   out.start = {start->x, start->y, std::atan2(first.y - start->y, first.x - start->x)};
-  out.route_length_m = polyline_m(*route);
+  out.route_length_m = polyline_length_m(*route);
   return out;
 }
 
@@ -360,7 +354,7 @@ Result<TeachAndRepeatResult> run_teach_and_repeat(
   run.start = start;
   run.goal_m = goal_m;
   run.route_m = *route;
-  run.taught_route_length_m = polyline_m(*route);
+  run.taught_route_length_m = polyline_length_m(*route);
 
   Experiment x(camera, options, start, seed);
   fusion::FusionSlam& slam = x.slam();
@@ -462,7 +456,7 @@ Result<TeachAndRepeatResult> run_teach_and_repeat(
       if (!c.confirmed) continue;
       confirmed = true;
       record.offset_m = std::hypot(c.T_node_robot.x, c.T_node_robot.y);
-      if (std::hypot(c.T_node_robot.x, c.T_node_robot.y) <= options.search_tolerance_m) break;
+      if (record.offset_m <= options.search_tolerance_m) break;
     }
     (void)process.handle(confirmed ? ProcessEvent{process_event::NodeConfirmed{}}
                                    : ProcessEvent{process_event::NodeNotConfirmed{}});

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "tessera/core/assert.hpp"
+#include "tessera/grid/hex_grid.hpp"
 
 namespace tessera {
 namespace {
@@ -12,10 +13,9 @@ namespace {
 // True when offset d from a cell centre lies in its flat-topped hexagon: the projection onto each
 // of the three neighbour axes of Table 4.3 (0, 60 and 120 degrees from north) is within d/2.
 bool inside_hexagon(Vec2 d, const CellPolylineOptions& o) {
-  constexpr double kC = 0.86602540378443864676;  // cos 30 deg
   const double h = o.cell_radius_m / 2.0 + o.border_tolerance_m;
-  return std::abs(d.y) <= h && std::abs(kC * d.x + 0.5 * d.y) <= h &&
-         std::abs(kC * d.x - 0.5 * d.y) <= h;
+  return std::abs(d.y) <= h && std::abs(kHexColumnStep * d.x + 0.5 * d.y) <= h &&
+         std::abs(kHexColumnStep * d.x - 0.5 * d.y) <= h;
 }
 
 // True when every sample of segment a-b is inside the cells run[first..last] (see

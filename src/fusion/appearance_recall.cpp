@@ -9,9 +9,6 @@
 #include "tessera/core/assert.hpp"
 
 namespace tessera::fusion {
-namespace {
-
-}  // namespace
 
 std::optional<std::string> validate(const AppearanceOptions& o) {
   if (o.max_features < 1) return "max_features must be >= 1";

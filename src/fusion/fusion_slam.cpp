@@ -224,7 +224,7 @@ FusionCapture FusionSlam::add_frame(const RgbdFrame& frame, double neck_rad) {
     return out;
   }
   created.node.t_s = t_s_;
-  const std::size_t graph_node = graph_node_this_update_ ? poses_.size() - 1 : add_graph_node();
+  const std::size_t graph_node = current_graph_node();
 
   // Candidates: the recent nodes and the nodes of the current and neighbouring cells whose
   // camera faces roughly the same way, nearest first (thesis 4.3.1: search by cell).
@@ -328,7 +328,7 @@ NodeConfirmation FusionSlam::confirm_node(std::size_t node_id, const RgbdFrame& 
   ++stats_.matches_accepted;
   out.confirmed = true;
   out.T_node_robot = *rel;
-  const std::size_t graph_node = graph_node_this_update_ ? poses_.size() - 1 : add_graph_node();
+  const std::size_t graph_node = current_graph_node();
   if (stored.graph_node != graph_node) {
     add_match_edge(stored.graph_node, graph_node, *rel);
     optimise();

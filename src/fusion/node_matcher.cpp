@@ -524,14 +524,9 @@ MatchResult match_nodes(const ImageNode& prev, const ImageNode& curr,
   }
   const std::vector<Match> matches = match_descriptors(prev, curr, options);
   r.matches = static_cast<int>(matches.size());
-  for (const Match& m : matches) {
-    r.matches_3d += prev.features[static_cast<std::size_t>(m.prev)].has_depth &&
-                            curr.features[static_cast<std::size_t>(m.curr)].has_depth
-                        ? 1
-                        : 0;
-  }
 
   Attempt rigid = rigid_3d(prev, curr, matches, options, rng);
+  r.matches_3d = rigid.usable_matches;  // the matches with depth in both nodes
   // Too few matches means too little seen in common; a 3D->2D fit would see no more.
   const bool run_pnp = (rigid.ok || rigid.reason != MatchReason::kTooFewMatches) &&
                        (options.pnp_fallback || (rigid.ok && options.pnp_cross_check));

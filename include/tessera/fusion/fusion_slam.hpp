@@ -187,6 +187,10 @@ class FusionSlam {
     Pose2 odometry;
   };
   std::size_t add_graph_node();
+  /// The graph node of the last update(): the one it made, or a new one at its pose.
+  std::size_t current_graph_node() {
+    return graph_node_this_update_ ? poses_.size() - 1 : add_graph_node();
+  }
   [[nodiscard]] std::optional<Pose2> planar_relative(const ImageNode& prev, const ImageNode& curr,
                                                      const MatchResult& m,
                                                      std::string& reason) const;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <exception>
 #include <opencv2/imgcodecs.hpp>
+#include <vector>
 
 #include "internal/file_util.hpp"
 #include "internal/raw_image.hpp"
@@ -57,6 +58,18 @@ RgbImage to_rgb_image(const cv::Mat& m) {
               out.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(row) * m.cols);
   }
   return out;
+}
+
+Result<std::string> encode_png_bytes(const cv::Mat& m) {
+  std::vector<unsigned char> buffer;
+  bool ok = false;
+  try {
+    ok = cv::imencode(".png", m, buffer);
+  } catch (const std::exception& e) {
+    return runtime_error(std::string("PNG encoder failed: ") + e.what());
+  }
+  if (!ok) return runtime_error("PNG encoder failed");
+  return std::string(buffer.begin(), buffer.end());
 }
 
 }  // namespace tessera::io_internal

@@ -1,29 +1,13 @@
 #include "tessera/io/image_file.hpp"
 
-#include <exception>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
+#include "internal/cv_image.hpp"
 #include "internal/raw_image.hpp"
 
 namespace tessera {
-namespace {
-
-Result<std::string> encode(const cv::Mat& m) {
-  std::vector<unsigned char> buffer;
-  bool ok = false;
-  try {
-    ok = cv::imencode(".png", m, buffer);
-  } catch (const std::exception& e) {
-    return runtime_error(std::string("PNG encoder failed: ") + e.what());
-  }
-  if (!ok) return runtime_error("PNG encoder failed");
-  return std::string(buffer.begin(), buffer.end());
-}
-
-}  // namespace
-
 Result<GrayImage> read_gray_image(const std::filesystem::path& path) {
   Result<io_internal::RawImage> raw = io_internal::read_raw_image(path);
   if (!raw) return raw.error();
@@ -35,7 +19,7 @@ Result<std::string> encode_png(const GrayImage& image) {
   // cv::Mat does not write through the pointer here; imencode only reads.
   const cv::Mat m(image.height, image.width, CV_8UC1,
                   const_cast<std::uint8_t*>(image.pixels.data()));
-  return encode(m);
+  return io_internal::encode_png_bytes(m);
 }
 
 Result<std::string> encode_png(const RgbImage& image) {
@@ -50,7 +34,7 @@ Result<std::string> encode_png(const RgbImage& image) {
       out[3 * x + 2] = c.r;
     }
   }
-  return encode(bgr);
+  return io_internal::encode_png_bytes(bgr);
 }
 
 }  // namespace tessera

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <fstream>
 #include <limits>
 #include <opencv2/core.hpp>
@@ -246,15 +245,9 @@ Status write_text(const std::filesystem::path& path, const std::string& text) {
 }
 
 Status write_png(const std::filesystem::path& path, const cv::Mat& m) {
-  std::vector<unsigned char> buffer;
-  bool ok = false;
-  try {
-    ok = cv::imencode(".png", m, buffer);
-  } catch (const std::exception& e) {
-    return runtime_error(path.string() + ": PNG encoder failed: " + e.what());
-  }
-  if (!ok) return runtime_error(path.string() + ": PNG encoder failed");
-  return write_text(path, std::string(buffer.begin(), buffer.end()));
+  Result<std::string> bytes = io_internal::encode_png_bytes(m);
+  if (!bytes) return runtime_error(path.string() + ": " + bytes.error().message);
+  return write_text(path, *bytes);
 }
 
 std::string stamp_text(double t_s) {

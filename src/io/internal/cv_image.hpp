@@ -30,6 +30,10 @@ enum class PngCheck { kNone, kStructure };
 [[nodiscard]] Result<cv::Mat> read_image_file(const std::filesystem::path& path, int flags,
                                               PngCheck png_check);
 
+/// cv::imencode(".png", m) with OpenCV's exceptions caught: the file's bytes, or a kRuntime error
+/// "PNG encoder failed[: <what OpenCV said>]".
+[[nodiscard]] Result<std::string> encode_png_bytes(const cv::Mat& m);
+
 /// A matrix's samples for error messages: "8-bit with 3 channels", "16-bit with 1 channel",
 /// "unusual-depth with 2 channels" (depths other than 8, 16 and 32 bits).
 [[nodiscard]] std::string describe_pixels(const cv::Mat& m);

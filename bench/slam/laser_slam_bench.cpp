@@ -99,6 +99,16 @@ const std::map<std::string, Setter>& setters() {
       {"loop_sigmas.t", [](auto& o, double v) { o.loop_sigmas.translation_m = v; }},
       {"loop_sigmas.r", [](auto& o, double v) { o.loop_sigmas.rotation_rad = v; }},
       {"loop_hessian_scale", [](auto& o, double v) { o.loop_hessian_scale = v; }},
+      {"submaps.travel_m", [](auto& o, double v) { o.submaps.travel_per_submap_m = v; }},
+      {"growth_m", [](auto& o, double v) { o.loop_window_growth_m_per_m = v; }},
+      {"growth_rad", [](auto& o, double v) { o.loop_window_growth_rad_per_m = v; }},
+      {"max_window_m", [](auto& o, double v) { o.loop_window_max.linear_m = v; }},
+      {"reset_path_m", [](auto& o, double v) { o.loop_reset_path_m = v; }},
+      {"verify_beyond", [](auto& o, double v) { o.verify_beyond = v; }},
+      {"verify_span", [](auto& o, double v) { o.verify_span_nodes = static_cast<int>(v); }},
+      {"verify_m", [](auto& o, double v) { o.verify_tolerance.linear_m = v; }},
+      {"verify_rad", [](auto& o, double v) { o.verify_tolerance.angular_rad = v; }},
+      {"outlier_sigmas", [](auto& o, double v) { o.loop_outlier_sigmas = v; }},
       {"huber_scale", [](auto& o, double v) { o.huber_scale = v; }},
   };
   return kSetters;
@@ -106,6 +116,7 @@ const std::map<std::string, Setter>& setters() {
 
 void print_metric(const char* name, const std::vector<StampedPose2>& trajectory,
                   const std::vector<Relation>& relations, double time_offset_s) {
+  if (relations.empty()) return;
   const Result<RelationMetric> m = relation_metric(trajectory, relations, time_offset_s);
   if (!m) {
     std::printf("%-22s relation metric: %s\n", name, m.error().message.c_str());
@@ -206,7 +217,10 @@ int run(int argc, char** argv) {
   if (max_scans >= 0 && static_cast<std::size_t>(max_scans) < log->scans.size()) {
     log->scans.resize(static_cast<std::size_t>(max_scans));
   }
-  Result<std::vector<Relation>> relations = read_relations(relations_path);
+  // "--relations none": a log without relations (a perturbed corrected log, scored by ATE outside).
+  Result<std::vector<Relation>> relations =
+      relations_path == "none" ? Result<std::vector<Relation>>(std::vector<Relation>{})
+                               : read_relations(relations_path);
   if (!relations) {
     std::fprintf(stderr, "%s\n", relations.error().message.c_str());
     return 3;
@@ -258,10 +272,10 @@ int run(int argc, char** argv) {
   print_metric("full SLAM", result->trajectory, *relations, time_offset_s);
   std::printf(
       "nodes %d  submaps %d  loop searches %d (global %d)  loop closures %d  optimisations %d  "
-      "edges %zu  max loop correction %.3f m %.4f rad\n",
+      "edges %zu  max loop correction %.3f m %.4f rad  candidates %d unverified %d rejected %d\n",
       st.nodes, st.submaps, st.loop_searches, st.global_searches, st.loop_closures,
       st.optimizations, result->graph.edges.size(), st.max_loop_correction_m,
-      st.max_loop_correction_rad);
+      st.max_loop_correction_rad, st.loop_candidates, st.loop_unverified, st.loop_rejected);
   {
     // Loop constraints the final graph disagrees with: outliers the robust loss had to absorb.
     int robust = 0, off_10cm = 0, off_50cm = 0;

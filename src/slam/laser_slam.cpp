@@ -84,6 +84,20 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
   if (!(o.global_window.linear_m >= 0.0) || !(o.global_window.angular_rad >= 0.0)) {
     return "global_window must be >= 0";
   }
+  if (!(o.loop_window_growth_m_per_m >= 0.0) || !(o.loop_window_growth_rad_per_m >= 0.0)) {
+    return "loop_window_growth_* must be >= 0";
+  }
+  if (!(o.loop_window_max.linear_m >= o.loop_closer.window.linear_m) ||
+      !(o.loop_window_max.angular_rad >= o.loop_closer.window.angular_rad)) {
+    return "loop_window_max must be at least loop_closer.window";
+  }
+  if (!(o.loop_reset_path_m >= 0.0)) return "loop_reset_path_m must be >= 0";
+  if (!(o.verify_beyond >= 1.0)) return "verify_beyond must be >= 1";
+  if (o.verify_span_nodes < 1) return "verify_span_nodes must be >= 1";
+  if (!(o.verify_tolerance.linear_m > 0.0) || !(o.verify_tolerance.angular_rad > 0.0)) {
+    return "verify_tolerance must be > 0";
+  }
+  if (!(o.loop_outlier_sigmas >= 0.0)) return "loop_outlier_sigmas must be >= 0";
   if (o.optimize_every_n_nodes < 1) return "optimize_every_n_nodes must be >= 1";
   if (o.optimizer_iterations < 1) return "optimizer_iterations must be >= 1";
   if (auto p = validate(o.local_sigmas, "local_sigmas")) return p;
@@ -109,11 +123,15 @@ struct LaserSlam::Impl {
     ScanPoints points;              // for the final map
     std::vector<Vec2> loop_points;  // for loop-closure searches
     std::vector<int> submaps;       // the submaps it was inserted into
+    double travel_m = 0.0;          // local SLAM's path length up to this node
   };
   struct SubmapRecord {
     int vertex = 0;
     bool finished = false;
     Vec2 box_lo_m, box_hi_m;  // known cells, submap frame
+    double travel_first_m = 0.0;  // path length at its first and (once finished) mid node
+    double travel_mid_m = 0.0;
+    double closure_travel_m = 0.0;  // path length at the last far closure when it finished
     FixedRatioSampler sampler;
     FixedRatioSampler global_sampler;
   };
@@ -145,6 +163,16 @@ struct LaserSlam::Impl {
   double last_t_s = 0.0;
   int nodes_since_optimization = 0;
   int loop_constraints_since_optimization = 0;
+  double travel_m = 0.0;          // local SLAM's path length over the nodes so far
+  double closure_travel_m = 0.0;  // the path length at the last closure that joined far poses
+  /// A wide-window match waiting for another one to agree with it.
+  struct Candidate {
+    int node = 0;
+    int submap = 0;
+    LoopMatch match;
+    Pose2 correction;  // T_global_global': where the match moves the node's current estimate
+  };
+  std::vector<Candidate> candidates;
   LaserSlamStats stats;
 
   int add_vertex(const Pose2& T_global, int scan) {
@@ -167,37 +195,30 @@ struct LaserSlam::Impl {
     return graph.poses[static_cast<std::size_t>(vertex)];
   }
 
-  /// Searches submap `submap_id` for node `node_index` if the node lies within the submap's known
-  /// box (grown by the search window) and the sampler picks the pair; adds a robust constraint on
-  /// success.
-  void maybe_close_loop(int node_index, int submap_id) {
-    Node& node = nodes[static_cast<std::size_t>(node_index)];
-    SubmapRecord& record = submap_records[static_cast<std::size_t>(submap_id)];
-    if (std::find(node.submaps.begin(), node.submaps.end(), submap_id) != node.submaps.end()) {
-      return;
+  /// Path length between node and submap since the last closure that joined far poses: what the
+  /// drift of local SLAM between them grows with.
+  [[nodiscard]] double uncertain_path_m(const Node& node, const SubmapRecord& record) const {
+    if (node.travel_m >= record.travel_mid_m) {  // the newest node, after the submap
+      return std::max(0.0, std::min(node.travel_m - record.travel_mid_m,
+                                    node.travel_m - closure_travel_m));
     }
-    const Pose2 guess = between(global_pose(record.vertex), global_pose(node.vertex));
-    const double margin = options.loop_closer.window.linear_m;
-    if (guess.x < record.box_lo_m.x - margin || guess.x > record.box_hi_m.x + margin ||
-        guess.y < record.box_lo_m.y - margin || guess.y > record.box_hi_m.y + margin) {
-      return;
-    }
-    // Only pairs that overlap: enough of the scan, placed at the estimate, falls on cells the
-    // submap knows. Cheap (one look-up per point) and it spares most hopeless searches.
-    const ProbabilityGrid& grid = submaps.submap(submap_id).grid();
-    if (known_fraction(grid, guess, node.loop_points) < options.loop_min_overlap) return;
-    if (!record.sampler.pulse(options.loop_sampling_ratio)) return;
-    ++stats.loop_searches;
-    std::optional<LoopMatch> match =
-        closer.match(submap_id, grid, guess, node.loop_points, node.points.returns_m);
-    if (!match && options.global_sampling_ratio > 0.0 &&
-        record.global_sampler.pulse(options.global_sampling_ratio)) {
-      ++stats.global_searches;
-      match = closer.match(submap_id, grid, guess, node.loop_points, node.points.returns_m,
-                           options.global_window, options.global_min_score);
-    }
-    if (!match) return;
-    const Pose2 correction = between(guess, match->T_submap_robot);
+    return std::max(0.0, std::min(record.travel_mid_m - node.travel_m,
+                                  record.travel_mid_m - record.closure_travel_m));
+  }
+
+  [[nodiscard]] SearchWindow window_for(double path_m) const {
+    const SearchWindow& base = options.loop_closer.window;
+    return {std::min(base.linear_m + options.loop_window_growth_m_per_m * path_m,
+                     options.loop_window_max.linear_m),
+            std::min(base.angular_rad + options.loop_window_growth_rad_per_m * path_m,
+                     options.loop_window_max.angular_rad)};
+  }
+
+  void add_loop_constraint(int node_index, int submap_id, const LoopMatch& match,
+                           const Pose2& guess) {
+    const Node& node = nodes[static_cast<std::size_t>(node_index)];
+    const SubmapRecord& record = submap_records[static_cast<std::size_t>(submap_id)];
+    const Pose2 correction = between(guess, match.T_submap_robot);
     stats.max_loop_correction_m =
         std::max(stats.max_loop_correction_m, std::hypot(correction.x, correction.y));
     stats.max_loop_correction_rad =
@@ -205,16 +226,106 @@ struct LaserSlam::Impl {
     Eigen::Matrix3d information = loop_information;
     if (options.loop_hessian_scale > 0.0) {
       // Plus a floor of 1 m / 1 rad sigma so that the matrix stays positive definite.
-      information = options.loop_hessian_scale * match->hessian + Eigen::Matrix3d::Identity();
+      information = options.loop_hessian_scale * match.hessian + Eigen::Matrix3d::Identity();
     }
-    graph.edges.push_back({record.vertex, node.vertex, match->T_submap_robot, information, true});
+    graph.edges.push_back({record.vertex, node.vertex, match.T_submap_robot, information, true});
     ++stats.loop_closures;
     ++loop_constraints_since_optimization;
+    if (std::abs(node.travel_m - record.travel_mid_m) >= options.loop_reset_path_m &&
+        node_index + 1 == static_cast<int>(nodes.size())) {
+      closure_travel_m = travel_m;
+    }
+  }
+
+  /// A wide-window match is kept as a candidate until another candidate of a nearby node implies
+  /// the same correction of the estimate; then both become constraints.
+  void verify_candidate(int node_index, int submap_id, const LoopMatch& match, const Pose2& guess) {
+    ++stats.loop_candidates;
+    const Node& node = nodes[static_cast<std::size_t>(node_index)];
+    const SubmapRecord& record = submap_records[static_cast<std::size_t>(submap_id)];
+    Candidate c{node_index, submap_id, match,
+                global_pose(record.vertex) * match.T_submap_robot *
+                    global_pose(node.vertex).inverse()};
+    const Vec2 at = global_pose(node.vertex).translation();
+    std::vector<Candidate> kept;
+    bool confirmed = false;
+    for (Candidate& other : candidates) {
+      if (std::abs(other.node - node_index) > options.verify_span_nodes) {
+        ++stats.loop_unverified;
+        continue;
+      }
+      const Vec2 a = other.correction * at;
+      const Vec2 b = c.correction * at;
+      const bool agrees = other.node != node_index &&
+                          (a - b).norm() <= options.verify_tolerance.linear_m &&
+                          std::abs(normalize_angle(other.correction.theta - c.correction.theta)) <=
+                              options.verify_tolerance.angular_rad;
+      if (agrees) {
+        const SubmapRecord& r = submap_records[static_cast<std::size_t>(other.submap)];
+        const Node& n = nodes[static_cast<std::size_t>(other.node)];
+        add_loop_constraint(other.node, other.submap, other.match,
+                            between(global_pose(r.vertex), global_pose(n.vertex)));
+        confirmed = true;
+      } else {
+        kept.push_back(std::move(other));
+      }
+    }
+    candidates = std::move(kept);
+    if (confirmed) {
+      add_loop_constraint(node_index, submap_id, match, guess);
+    } else {
+      candidates.push_back(std::move(c));
+    }
+  }
+
+  /// Searches submap `submap_id` for node `node_index` if the node lies within the submap's known
+  /// box (grown by the search window) and the sampler picks the pair; adds a robust constraint on
+  /// success, or a candidate for verification when the window had to be wide.
+  void maybe_close_loop(int node_index, int submap_id) {
+    Node& node = nodes[static_cast<std::size_t>(node_index)];
+    SubmapRecord& record = submap_records[static_cast<std::size_t>(submap_id)];
+    if (std::find(node.submaps.begin(), node.submaps.end(), submap_id) != node.submaps.end()) {
+      return;
+    }
+    const SearchWindow window = window_for(uncertain_path_m(node, record));
+    const bool wide = window.linear_m > options.verify_beyond * options.loop_closer.window.linear_m;
+    const Pose2 guess = between(global_pose(record.vertex), global_pose(node.vertex));
+    const double margin = window.linear_m;
+    if (guess.x < record.box_lo_m.x - margin || guess.x > record.box_hi_m.x + margin ||
+        guess.y < record.box_lo_m.y - margin || guess.y > record.box_hi_m.y + margin) {
+      return;
+    }
+    // Only pairs that overlap: enough of the scan, placed at the estimate, falls on cells the
+    // submap knows. Cheap (one look-up per point) and it spares most hopeless searches. A wide
+    // window is searched because the estimate may be far off, so it skips this test.
+    const ProbabilityGrid& grid = submaps.submap(submap_id).grid();
+    if (!wide && known_fraction(grid, guess, node.loop_points) < options.loop_min_overlap) return;
+    if (!record.sampler.pulse(options.loop_sampling_ratio)) return;
+    ++stats.loop_searches;
+    std::optional<LoopMatch> match = closer.match(submap_id, grid, guess, node.loop_points,
+                                                  node.points.returns_m, window,
+                                                  options.loop_closer.min_score);
+    bool global = false;
+    if (!match && options.global_sampling_ratio > 0.0 &&
+        record.global_sampler.pulse(options.global_sampling_ratio)) {
+      ++stats.global_searches;
+      match = closer.match(submap_id, grid, guess, node.loop_points, node.points.returns_m,
+                           options.global_window, options.global_min_score);
+      global = true;
+    }
+    if (!match) return;
+    if (wide || global) {
+      verify_candidate(node_index, submap_id, *match, guess);
+    } else {
+      add_loop_constraint(node_index, submap_id, *match, guess);
+    }
   }
 
   void on_submap_finished(int submap_id) {
     SubmapRecord& record = submap_records[static_cast<std::size_t>(submap_id)];
     record.finished = true;
+    record.travel_mid_m = 0.5 * (record.travel_first_m + travel_m);
+    record.closure_travel_m = closure_travel_m;
     const ProbabilityGrid& grid = submaps.submap(submap_id).grid();
     if (const auto box = grid.known_box()) {
       const GridGeometry& g = grid.geometry();
@@ -227,12 +338,30 @@ struct LaserSlam::Impl {
     for (int k = 0; k < static_cast<int>(nodes.size()); ++k) maybe_close_loop(k, submap_id);
   }
 
+  /// Removes the loop constraints the optimised graph disagrees with by more than
+  /// loop_outlier_sigmas (whitened residual); returns how many.
+  int switch_off_outliers() {
+    if (options.loop_outlier_sigmas <= 0.0) return 0;
+    const double gate = options.loop_outlier_sigmas * options.loop_outlier_sigmas;
+    const std::size_t before = graph.edges.size();
+    std::erase_if(graph.edges, [&](const PoseGraphEdge& e) {
+      if (!e.robust) return false;
+      const Pose2 error = between(between(global_pose(e.from), global_pose(e.to)), e.measurement);
+      const Eigen::Vector3d r(error.x, error.y, error.theta);
+      return r.dot(e.information * r) > gate;
+    });
+    const int removed = static_cast<int>(before - graph.edges.size());
+    stats.loop_rejected += removed;
+    return removed;
+  }
+
   Status optimize_graph() {
     const auto t0 = std::chrono::steady_clock::now();
     OptimizeOptions o;
     o.max_iterations = options.optimizer_iterations;
     o.huber_scale = options.huber_scale;
     Result<OptimizeSummary> summary = optimize(graph, o);
+    if (summary && switch_off_outliers() > 0) summary = optimize(graph, o);
     stats.optimization_s += seconds_since(t0);
     if (!summary) return summary.error();
     ++stats.optimizations;
@@ -279,8 +408,10 @@ struct LaserSlam::Impl {
     const Pose2 correction = local_to_global();
     const int submaps_before = submaps.size();
     const ActiveSubmaps::Insertion insertion = submaps.insert(points, T_local);
+    if (!nodes.empty()) travel_m += (T_local.translation() - nodes.back().T_local_robot.translation()).norm();
     for (int id = submaps_before; id < submaps.size(); ++id) {
       SubmapRecord record;
+      record.travel_first_m = travel_m;
       record.vertex = add_vertex(correction * submaps.submap(id).local_pose(), -1);
       submap_records.push_back(record);
     }
@@ -288,6 +419,7 @@ struct LaserSlam::Impl {
     node.scan = scan_index;
     node.vertex = add_vertex(correction * T_local, scan_index);
     node.T_local_robot = T_local;
+    node.travel_m = travel_m;
     node.loop_points = adaptive_voxel_filter(points.returns_m, options.loop_points);
     node.points = std::move(points);
     node.submaps = insertion.inserted_into;

@@ -7,6 +7,7 @@ namespace tessera::slam {
 std::optional<std::string> validate(const SubmapOptions& o) {
   if (!(o.resolution_m > 0.0)) return "resolution_m must be > 0";
   if (o.scans_per_submap < 1) return "scans_per_submap must be >= 1";
+  if (!(o.travel_per_submap_m >= 0.0)) return "travel_per_submap_m must be >= 0";
   if (!(o.initial_size_m > 0.0)) return "initial_size_m must be > 0";
   return validate(o.insert);
 }
@@ -29,6 +30,9 @@ void Submap::insert(const ScanPoints& points, const Pose2& T_local_robot,
                     const RangeInserter& inserter) {
   TESSERA_ASSERT(!finished_);
   inserter.insert(grid_, between(T_local_submap_, T_local_robot), points);
+  const Vec2 position = T_local_robot.translation();
+  if (num_scans_ > 0) travel_m_ += (position - last_position_m_).norm();
+  last_position_m_ = position;
   ++num_scans_;
 }
 
@@ -38,9 +42,9 @@ ActiveSubmaps::ActiveSubmaps(const SubmapOptions& options)
 ActiveSubmaps::Insertion ActiveSubmaps::insert(const ScanPoints& points,
                                                const Pose2& T_local_robot) {
   Insertion out;
-  if (active_.empty() || submap(active_.back()).num_scans() >= options_.scans_per_submap) {
-    // The oldest active submap is finished by now (it reached 2 * scans_per_submap); it leaves the
-    // window when the new one enters.
+  if (active_.empty() || full(submap(active_.back()))) {
+    // The oldest active submap was finished when the newest became full; it leaves the window
+    // when the new one enters.
     if (active_.size() >= 2) active_.erase(active_.begin());
     submaps_.emplace_back(Pose2{T_local_robot.x, T_local_robot.y, 0.0}, options_);
     active_.push_back(static_cast<int>(submaps_.size()) - 1);
@@ -50,11 +54,16 @@ ActiveSubmaps::Insertion ActiveSubmaps::insert(const ScanPoints& points,
     out.inserted_into.push_back(id);
   }
   Submap& oldest = submaps_[static_cast<std::size_t>(active_.front())];
-  if (!oldest.finished() && oldest.num_scans() >= 2 * options_.scans_per_submap) {
+  if (active_.size() >= 2 && !oldest.finished() && full(submap(active_.back()))) {
     oldest.finish();
     out.finished = active_.front();
   }
   return out;
+}
+
+bool ActiveSubmaps::full(const Submap& s) const {
+  return s.num_scans() >= options_.scans_per_submap ||
+         (options_.travel_per_submap_m > 0.0 && s.travel_m() >= options_.travel_per_submap_m);
 }
 
 std::optional<int> ActiveSubmaps::matching_id() const {

@@ -20,6 +20,11 @@ struct SubmapOptions {
   /// Scans inserted into the newest submap before the next one starts; each finished submap holds
   /// twice this many (Cartographer's num_range_data).
   int scans_per_submap = 90;
+  /// ... or metres travelled since the newest submap started, whichever comes first (0: scans
+  /// only). Sizes submaps by the ground they cover, so that a log with a scan every metre does not
+  /// build 180-metre submaps whose walls no longer agree: odometry and matching drift grow with
+  /// distance, not with the number of scans (decision 0011).
+  double travel_per_submap_m = 15.0;
   /// Side of a new submap's grid; it grows as scans reach beyond it.
   double initial_size_m = 16.0;
   RangeInsertOptions insert;
@@ -38,6 +43,8 @@ class Submap {
   [[nodiscard]] const Pose2& local_pose() const { return T_local_submap_; }
   [[nodiscard]] const ProbabilityGrid& grid() const { return grid_; }
   [[nodiscard]] int num_scans() const { return num_scans_; }
+  /// Path length of the robot over the scans inserted so far (metres).
+  [[nodiscard]] double travel_m() const { return travel_m_; }
   [[nodiscard]] bool finished() const { return finished_; }
 
   /// Inserts a scan taken at T_local_robot. Precondition: !finished().
@@ -48,6 +55,8 @@ class Submap {
   Pose2 T_local_submap_;
   ProbabilityGrid grid_;
   int num_scans_ = 0;
+  double travel_m_ = 0.0;
+  Vec2 last_position_m_;
   bool finished_ = false;
 };
 
@@ -64,7 +73,8 @@ class ActiveSubmaps {
     std::optional<int> finished;
   };
   /// Inserts a scan taken at T_local_robot into the active submaps, starting a new submap first
-  /// when the newest is full and finishing the oldest when it holds 2 * scans_per_submap scans.
+  /// when the newest is full (scans_per_submap scans or travel_per_submap_m metres) and finishing
+  /// the oldest when the newest becomes full: the oldest then holds about twice a full one.
   Insertion insert(const ScanPoints& points, const Pose2& T_local_robot);
 
   /// The submap the next scan should be matched against (the oldest active one); nullopt before
@@ -78,6 +88,8 @@ class ActiveSubmaps {
   [[nodiscard]] const std::vector<int>& active_ids() const { return active_; }
 
  private:
+  [[nodiscard]] bool full(const Submap& s) const;
+
   SubmapOptions options_;
   RangeInserter inserter_;
   std::deque<Submap> submaps_;

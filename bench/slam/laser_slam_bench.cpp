@@ -93,6 +93,8 @@ const std::map<std::string, Setter>& setters() {
       {"optimizer_iterations",
        [](auto& o, double v) { o.optimizer_iterations = static_cast<int>(v); }},
       {"local_sigmas.t", [](auto& o, double v) { o.local_sigmas.translation_m = v; }},
+      {"local_per_m.t", [](auto& o, double v) { o.local_sigmas_per_m.translation_m = v; }},
+      {"local_per_m.r", [](auto& o, double v) { o.local_sigmas_per_m.rotation_rad = v; }},
       {"local_sigmas.r", [](auto& o, double v) { o.local_sigmas.rotation_rad = v; }},
       {"submap_sigmas.t", [](auto& o, double v) { o.submap_sigmas.translation_m = v; }},
       {"submap_sigmas.r", [](auto& o, double v) { o.submap_sigmas.rotation_rad = v; }},

@@ -18,6 +18,13 @@ Eigen::Matrix3d information_of(const ConstraintSigmas& s) {
   return info;
 }
 
+/// Sigmas `base` grown by `per_m` for each metre of `distance_m`.
+ConstraintSigmas grown(const ConstraintSigmas& base, const ConstraintSigmas& per_m,
+                       double distance_m) {
+  return {base.translation_m + per_m.translation_m * distance_m,
+          base.rotation_rad + per_m.rotation_rad * distance_m};
+}
+
 std::optional<std::string> validate(const ConstraintSigmas& s, const std::string& name) {
   if (!(s.translation_m > 0.0) || !(s.rotation_rad > 0.0)) {
     return name + ": sigmas must be > 0";
@@ -101,6 +108,9 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
   if (o.optimize_every_n_nodes < 1) return "optimize_every_n_nodes must be >= 1";
   if (o.optimizer_iterations < 1) return "optimizer_iterations must be >= 1";
   if (auto p = validate(o.local_sigmas, "local_sigmas")) return p;
+  if (!(o.local_sigmas_per_m.translation_m >= 0.0) || !(o.local_sigmas_per_m.rotation_rad >= 0.0)) {
+    return "local_sigmas_per_m must be >= 0";
+  }
   if (auto p = validate(o.submap_sigmas, "submap_sigmas")) return p;
   if (auto p = validate(o.loop_sigmas, "loop_sigmas")) return p;
   if (!(o.loop_hessian_scale >= 0.0)) return "loop_hessian_scale must be >= 0";
@@ -141,16 +151,12 @@ struct LaserSlam::Impl {
         submaps(o.submaps),
         filter(o.motion_filter),
         closer(o.loop_closer),
-        local_information(information_of(o.local_sigmas)),
-        submap_information(information_of(o.submap_sigmas)),
         loop_information(information_of(o.loop_sigmas)) {}
 
   LaserSlamOptions options;
   ActiveSubmaps submaps;
   MotionFilter filter;
   LoopCloser closer;
-  Eigen::Matrix3d local_information;
-  Eigen::Matrix3d submap_information;
   Eigen::Matrix3d loop_information;
 
   PoseGraph graph;
@@ -423,6 +429,12 @@ struct LaserSlam::Impl {
     node.loop_points = adaptive_voxel_filter(points.returns_m, options.loop_points);
     node.points = std::move(points);
     node.submaps = insertion.inserted_into;
+    // Both kinds of local constraint loosen with the step from the previous node: a scan matched
+    // a metre after the last one is less certain than one matched 0.2 m after it.
+    const double step_m =
+        nodes.empty() ? 0.0 : (T_local.translation() - nodes.back().T_local_robot.translation()).norm();
+    const Eigen::Matrix3d submap_information =
+        information_of(grown(options.submap_sigmas, options.local_sigmas_per_m, step_m));
     for (const int id : insertion.inserted_into) {
       graph.edges.push_back({submap_records[static_cast<std::size_t>(id)].vertex, node.vertex,
                              between(submaps.submap(id).local_pose(), T_local), submap_information,
@@ -430,8 +442,9 @@ struct LaserSlam::Impl {
     }
     if (!nodes.empty()) {
       const Node& previous = nodes.back();
-      graph.edges.push_back({previous.vertex, node.vertex, between(previous.T_local_robot, T_local),
-                             local_information, false});
+      graph.edges.push_back(
+          {previous.vertex, node.vertex, between(previous.T_local_robot, T_local),
+           information_of(grown(options.local_sigmas, options.local_sigmas_per_m, step_m)), false});
     }
     nodes.push_back(std::move(node));
     scans.push_back({scan.t_s, static_cast<int>(nodes.size()) - 1, T_local});

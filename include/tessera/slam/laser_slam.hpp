@@ -120,6 +120,10 @@ struct LaserSlamOptions {
   ConstraintSigmas local_sigmas{0.02, 0.01};
   /// A node in the submaps it was inserted into.
   ConstraintSigmas submap_sigmas{0.02, 0.01};
+  /// Both grow by this for every metre between the node and the one before it: local SLAM's
+  /// error over a metre between scans is larger than over 0.2 m, and a graph that holds sparse
+  /// scans as stiffly as dense ones cannot take a loop closure's correction (decision 0011).
+  ConstraintSigmas local_sigmas_per_m{0.03, 0.01};
   /// A node matched into an older submap (robust): fixed sigmas, or (when loop_hessian_scale > 0)
   /// the refinement's J^T J times loop_hessian_scale, so a match along a corridor constrains only
   /// across it (the idea of Olson 2009 Sec. IV and Karto's response covariance). A scale of 80
@@ -127,8 +131,9 @@ struct LaserSlamOptions {
   /// the same as fixed sigmas, so the simpler one is the default.
   ConstraintSigmas loop_sigmas{0.02, 0.01};
   double loop_hessian_scale = 0.0;
-  /// Huber scale of robust constraints, in units of the whitened residual.
-  double huber_scale = 1.0;
+  /// Huber scale of robust constraints, in units of the whitened residual. 5 rather than 1: a
+  /// correct closure after metres of drift must be able to pull (decision 0011).
+  double huber_scale = 5.0;
 
   /// The final map: every node's scan at its optimised pose.
   double map_resolution_m = 0.05;

@@ -68,6 +68,7 @@ const std::map<std::string, Setter>& setters() {
       {"real_time.linear_window_m", [](auto& o, double v) { o.real_time.linear_window_m = v; }},
       {"real_time.angular_window_rad",
        [](auto& o, double v) { o.real_time.angular_window_rad = v; }},
+      {"real_time.step_range_m", [](auto& o, double v) { o.real_time.angular_step_range_m = v; }},
       {"refiner.translation_weight", [](auto& o, double v) { o.refiner.translation_weight = v; }},
       {"refiner.rotation_weight", [](auto& o, double v) { o.refiner.rotation_weight = v; }},
       {"refiner.max_iterations",

@@ -54,6 +54,7 @@ std::optional<std::string> validate(const RealTimeMatcherOptions& o) {
   if (!(o.translation_delta_cost_weight >= 0.0))
     return "translation_delta_cost_weight must be >= 0";
   if (!(o.rotation_delta_cost_weight >= 0.0)) return "rotation_delta_cost_weight must be >= 0";
+  if (!(o.angular_step_range_m > 0.0)) return "angular_step_range_m must be > 0";
   return std::nullopt;
 }
 
@@ -65,7 +66,9 @@ ScanMatch match_real_time(const ProbabilityGrid& grid, const Pose2& T_grid_robot
   const GridGeometry& g = grid.geometry();
   const double res = g.resolution_m();
   const std::vector<double> angles = angle_offsets(
-      options.angular_window_rad, angular_search_step_rad(res, max_range_of(points_robot)));
+      options.angular_window_rad,
+      angular_search_step_rad(res, std::min(max_range_of(points_robot),
+                                            options.angular_step_range_m)));
   const int n_lin = static_cast<int>(std::ceil(options.linear_window_m / res - 1e-9));
   const std::vector<float>& table = value_to_probability_table();
   const std::vector<std::uint16_t>& values = grid.values();

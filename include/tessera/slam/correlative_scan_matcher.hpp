@@ -37,6 +37,10 @@ struct RealTimeMatcherOptions {
   /// fit about equally the one nearest the prior wins (Cartographer's delta cost weights).
   double translation_delta_cost_weight = 0.1;  // per metre
   double rotation_delta_cost_weight = 0.1;     // per radian
+  /// The angle step is the one that moves a point at this range (or at the farthest point, if
+  /// nearer) by one cell: returns beyond it move further per step, which the refinement after the
+  /// search takes up. Stepping for a 20 m return would cost 2.5x the angles of an 8 m one.
+  double angular_step_range_m = 10.0;
 };
 
 /// Empty when usable; otherwise names the field and the rule it breaks.

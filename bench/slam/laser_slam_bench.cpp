@@ -106,7 +106,6 @@ const std::map<std::string, Setter>& setters() {
       {"growth_m", [](auto& o, double v) { o.loop_window_growth_m_per_m = v; }},
       {"growth_rad", [](auto& o, double v) { o.loop_window_growth_rad_per_m = v; }},
       {"max_window_m", [](auto& o, double v) { o.loop_window_max.linear_m = v; }},
-      {"reset_path_m", [](auto& o, double v) { o.loop_reset_path_m = v; }},
       {"verify_beyond", [](auto& o, double v) { o.verify_beyond = v; }},
       {"verify_span", [](auto& o, double v) { o.verify_span_nodes = static_cast<int>(v); }},
       {"verify_m", [](auto& o, double v) { o.verify_tolerance.linear_m = v; }},

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
 
 namespace tessera::slam {
 namespace {
@@ -98,7 +101,6 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
       !(o.loop_window_max.angular_rad >= o.loop_closer.window.angular_rad)) {
     return "loop_window_max must be at least loop_closer.window";
   }
-  if (!(o.loop_reset_path_m >= 0.0)) return "loop_reset_path_m must be >= 0";
   if (!(o.verify_beyond >= 1.0)) return "verify_beyond must be >= 1";
   if (o.verify_span_nodes < 1) return "verify_span_nodes must be >= 1";
   if (!(o.verify_tolerance.linear_m > 0.0) || !(o.verify_tolerance.angular_rad > 0.0)) {
@@ -139,9 +141,7 @@ struct LaserSlam::Impl {
     int vertex = 0;
     bool finished = false;
     Vec2 box_lo_m, box_hi_m;  // known cells, submap frame
-    double travel_first_m = 0.0;  // path length at its first and (once finished) mid node
-    double travel_mid_m = 0.0;
-    double closure_travel_m = 0.0;  // path length at the last far closure when it finished
+    double travel_first_m = 0.0;  // path length at its first node
     FixedRatioSampler sampler;
     FixedRatioSampler global_sampler;
   };
@@ -170,7 +170,13 @@ struct LaserSlam::Impl {
   int nodes_since_optimization = 0;
   int loop_constraints_since_optimization = 0;
   double travel_m = 0.0;          // local SLAM's path length over the nodes so far
-  double closure_travel_m = 0.0;  // the path length at the last closure that joined far poses
+  /// Submaps joined by the path (consecutive ones, weighted by the travel between their first
+  /// nodes) and by accepted loop closures (weighted by the travel from the node to its submap):
+  /// the shortest way between two submaps is the path along which drift can have grown.
+  std::vector<std::vector<std::pair<int, double>>> submap_links;
+  /// Shortest distances from the submap being searched to every submap (one Dijkstra per node
+  /// or finished submap; a few dozen vertices).
+  std::vector<double> link_distance_m;
   /// A wide-window match waiting for another one to agree with it.
   struct Candidate {
     int node = 0;
@@ -201,15 +207,43 @@ struct LaserSlam::Impl {
     return graph.poses[static_cast<std::size_t>(vertex)];
   }
 
-  /// Path length between node and submap since the last closure that joined far poses: what the
-  /// drift of local SLAM between them grows with.
-  [[nodiscard]] double uncertain_path_m(const Node& node, const SubmapRecord& record) const {
-    if (node.travel_m >= record.travel_mid_m) {  // the newest node, after the submap
-      return std::max(0.0, std::min(node.travel_m - record.travel_mid_m,
-                                    node.travel_m - closure_travel_m));
+  void link_submaps(int a, int b, double weight_m) {
+    submap_links[static_cast<std::size_t>(a)].emplace_back(b, weight_m);
+    submap_links[static_cast<std::size_t>(b)].emplace_back(a, weight_m);
+  }
+
+  /// Fills link_distance_m with the shortest distances over submap_links from `from`.
+  void compute_link_distances(int from) {
+    link_distance_m.assign(submap_links.size(), std::numeric_limits<double>::infinity());
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+    link_distance_m[static_cast<std::size_t>(from)] = 0.0;
+    open.emplace(0.0, from);
+    while (!open.empty()) {
+      const auto [d, v] = open.top();
+      open.pop();
+      if (d > link_distance_m[static_cast<std::size_t>(v)]) continue;
+      for (const auto& [w, weight] : submap_links[static_cast<std::size_t>(v)]) {
+        const double nd = d + weight;
+        if (nd < link_distance_m[static_cast<std::size_t>(w)]) {
+          link_distance_m[static_cast<std::size_t>(w)] = nd;
+          open.emplace(nd, w);
+        }
+      }
     }
-    return std::max(0.0, std::min(record.travel_mid_m - node.travel_m,
-                                  record.travel_mid_m - record.closure_travel_m));
+  }
+
+  /// The path along which local SLAM's drift between a node and a submap can have grown: from
+  /// the node to one of its own submaps, then the shortest way through submap_links (which loop
+  /// closures shorten). link_distance_m must hold the distances from that submap.
+  [[nodiscard]] double uncertain_path_m(const Node& node) const {
+    double best = std::numeric_limits<double>::infinity();
+    for (const int h : node.submaps) {
+      const double to_home =
+          std::abs(node.travel_m - submap_records[static_cast<std::size_t>(h)].travel_first_m);
+      best = std::min(best, to_home + link_distance_m[static_cast<std::size_t>(h)]);
+    }
+    return std::isfinite(best) ? best : travel_m;
   }
 
   [[nodiscard]] SearchWindow window_for(double path_m) const {
@@ -237,9 +271,10 @@ struct LaserSlam::Impl {
     graph.edges.push_back({record.vertex, node.vertex, match.T_submap_robot, information, true});
     ++stats.loop_closures;
     ++loop_constraints_since_optimization;
-    if (std::abs(node.travel_m - record.travel_mid_m) >= options.loop_reset_path_m &&
-        node_index + 1 == static_cast<int>(nodes.size())) {
-      closure_travel_m = travel_m;
+    for (const int h : node.submaps) {
+      link_submaps(h, submap_id,
+                   std::abs(node.travel_m -
+                            submap_records[static_cast<std::size_t>(h)].travel_first_m));
     }
   }
 
@@ -287,13 +322,13 @@ struct LaserSlam::Impl {
   /// Searches submap `submap_id` for node `node_index` if the node lies within the submap's known
   /// box (grown by the search window) and the sampler picks the pair; adds a robust constraint on
   /// success, or a candidate for verification when the window had to be wide.
-  void maybe_close_loop(int node_index, int submap_id) {
+  void maybe_close_loop(int node_index, int submap_id, double path_m) {
     Node& node = nodes[static_cast<std::size_t>(node_index)];
     SubmapRecord& record = submap_records[static_cast<std::size_t>(submap_id)];
     if (std::find(node.submaps.begin(), node.submaps.end(), submap_id) != node.submaps.end()) {
       return;
     }
-    const SearchWindow window = window_for(uncertain_path_m(node, record));
+    const SearchWindow window = window_for(path_m);
     const bool wide = window.linear_m > options.verify_beyond * options.loop_closer.window.linear_m;
     const Pose2 guess = between(global_pose(record.vertex), global_pose(node.vertex));
     const double margin = window.linear_m;
@@ -330,8 +365,6 @@ struct LaserSlam::Impl {
   void on_submap_finished(int submap_id) {
     SubmapRecord& record = submap_records[static_cast<std::size_t>(submap_id)];
     record.finished = true;
-    record.travel_mid_m = 0.5 * (record.travel_first_m + travel_m);
-    record.closure_travel_m = closure_travel_m;
     const ProbabilityGrid& grid = submaps.submap(submap_id).grid();
     if (const auto box = grid.known_box()) {
       const GridGeometry& g = grid.geometry();
@@ -341,7 +374,10 @@ struct LaserSlam::Impl {
     if (!options.loop_closure) return;
     closer.add_submap(submap_id, grid);
     // Older nodes that may see this submap (Cartographer's constraints for old nodes).
-    for (int k = 0; k < static_cast<int>(nodes.size()); ++k) maybe_close_loop(k, submap_id);
+    compute_link_distances(submap_id);
+    for (int k = 0; k < static_cast<int>(nodes.size()); ++k) {
+      maybe_close_loop(k, submap_id, uncertain_path_m(nodes[static_cast<std::size_t>(k)]));
+    }
   }
 
   /// Removes the loop constraints the optimised graph disagrees with by more than
@@ -419,6 +455,11 @@ struct LaserSlam::Impl {
       SubmapRecord record;
       record.travel_first_m = travel_m;
       record.vertex = add_vertex(correction * submaps.submap(id).local_pose(), -1);
+      submap_links.emplace_back();
+      if (id > 0) {
+        link_submaps(id - 1, id,
+                     travel_m - submap_records[static_cast<std::size_t>(id - 1)].travel_first_m);
+      }
       submap_records.push_back(record);
     }
     Node node;
@@ -455,8 +496,15 @@ struct LaserSlam::Impl {
     if (insertion.finished) on_submap_finished(*insertion.finished);
     if (options.loop_closure) {
       const int k = static_cast<int>(nodes.size()) - 1;
+      const Node& newest = nodes.back();
+      const int home = newest.submaps.back();
+      compute_link_distances(home);
+      const double to_home =
+          newest.travel_m - submap_records[static_cast<std::size_t>(home)].travel_first_m;
       for (int id = 0; id < submaps.size(); ++id) {
-        if (submap_records[static_cast<std::size_t>(id)].finished) maybe_close_loop(k, id);
+        if (submap_records[static_cast<std::size_t>(id)].finished) {
+          maybe_close_loop(k, id, to_home + link_distance_m[static_cast<std::size_t>(id)]);
+        }
       }
     }
     stats.loop_search_s += seconds_since(t_loop);

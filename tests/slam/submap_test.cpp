@@ -42,6 +42,27 @@ TEST(ActiveSubmaps, EveryScanGoesIntoTwoSubmapsAndEachFinishesAfterTwiceN) {
   EXPECT_EQ(submaps.submap(1).local_pose().theta, 0.0);
 }
 
+// A log with a scan every metre must not build submaps 180 m long: the newest submap is full
+// after travel_per_submap_m metres even with few scans, and the oldest finishes then.
+TEST(ActiveSubmaps, SubmapsAreFullAfterTheirTravelWhateverTheScanCount) {
+  SubmapOptions o;
+  o.scans_per_submap = 90;
+  o.travel_per_submap_m = 2.5;
+  o.initial_size_m = 4.0;
+  ActiveSubmaps submaps(o);
+  std::vector<int> finished_at;
+  for (int scan = 0; scan < 12; ++scan) {
+    const ActiveSubmaps::Insertion ins = submaps.insert(one_return(), {1.0 * scan, 0.0, 0.0});
+    if (ins.finished) finished_at.push_back(scan);
+  }
+  // Scan 0 starts submap 0; it is full at scan 3 (3 m), so scan 4 starts submap 1, full at
+  // scan 7, which finishes submap 0 (7 m, twice a full one).
+  EXPECT_EQ(finished_at, (std::vector<int>{7, 11}));
+  EXPECT_EQ(submaps.submap(0).num_scans(), 8);
+  EXPECT_NEAR(submaps.submap(0).travel_m(), 7.0, 1e-12);
+  EXPECT_NEAR(submaps.submap(1).local_pose().x, 4.0, 1e-12);
+}
+
 TEST(Submap, GridIsInTheSubmapFrame) {
   SubmapOptions o;
   Submap submap({5.0, 2.0, 0.0}, o);
@@ -56,6 +77,9 @@ TEST(SubmapOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
   SubmapOptions o;
   o.scans_per_submap = 0;
   EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("scans_per_submap"));
+  o = SubmapOptions{};
+  o.travel_per_submap_m = -1.0;
+  EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("travel_per_submap_m"));
 }
 
 }  // namespace

@@ -93,16 +93,15 @@ struct LaserSlamOptions {
   double global_sampling_ratio = 0.01;
   /// The score a match in the global window must reach: a wide window holds more look-alikes.
   double global_min_score = 0.72;
-  /// The loop search window grows with the pose uncertainty that local SLAM accumulates along the
-  /// path between a node and a submap since the last loop closure there: loop_closer.window plus
-  /// these per metre of that path, up to loop_window_max. After metres of drift the window still
-  /// holds the true pose, and a whole building can be searched (branch and bound prunes).
+  /// The loop search window grows with the path along which local SLAM's drift between a node
+  /// and a submap can have grown: the shortest way between them through the path and the loop
+  /// closures accepted so far (Karto's idea of searching by graph distance). Window =
+  /// loop_closer.window plus these per metre of that path, up to loop_window_max. After metres of
+  /// drift the window still holds the true pose, and a whole building can be searched (branch and
+  /// bound prunes); where loops were closed nearby it stays small.
   double loop_window_growth_m_per_m = 0.05;
   double loop_window_growth_rad_per_m = 0.01;
   SearchWindow loop_window_max{30.0, 3.14159265358979323846};
-  /// A closure between poses at least this far apart along the path resets the uncertainty: the
-  /// windows of the nodes after it start from loop_closer.window again.
-  double loop_reset_path_m = 30.0;
   /// A match found in a window wider than verify_beyond x loop_closer.window is only a candidate:
   /// it is trusted when another candidate of a node within verify_span_nodes agrees with it on the
   /// correction it implies (within verify_tolerance), as wrong matches in look-alike places do

@@ -49,7 +49,7 @@ struct LaserSlamOptions {
   /// moves a return 8 m away by 2.8 cm), tuned on the Intel lab's narrow rooms; in large halls
   /// (FHW, ACES) most walls are further away and an 8 m scan holds too little to match, so local
   /// SLAM drifted. 20 m: FHW seed 1 ATE 1.85 m instead of 3.44 m, Intel raw relations 0.0190 m
-  /// instead of 0.0198 m (decision 0012). The scan's own no-return threshold still applies.
+  /// instead of 0.0198 m (decision 0013). The scan's own no-return threshold still applies.
   ScanPointsOptions points{.min_range_m = 0.1, .max_range_m = 20.0, .missing_ray_length_m = 5.0};
   /// Voxel size of the points used for local matching (0: every point).
   double matching_voxel_m = 0.0;
@@ -59,9 +59,9 @@ struct LaserSlamOptions {
   /// as many wrong matches (the refined score, over all points, must pass the threshold too).
   /// Returns beyond 10 m are left out of the search points (the refinement still uses every
   /// point): the search's angle step is set by its farthest point, and 20 m points cost 2.5x the
-  /// angles of 8 m ones (decision 0012).
+  /// angles of 8 m ones (decision 0013).
   AdaptiveVoxelFilterOptions loop_points{0.5, 40, 10.0};
-  /// Submaps of 90 scans or 15 m of travel, whichever comes first (decision 0012: with a scan
+  /// Submaps of 90 scans or 15 m of travel, whichever comes first (decision 0013: with a scan
   /// every metre, 90 scans made 180-metre submaps whose walls no longer agreed).
   SubmapOptions submaps;
   /// Which scans become pose-graph nodes and go into submaps; the others are matched and placed
@@ -72,7 +72,7 @@ struct LaserSlamOptions {
   RealTimeMatcherOptions real_time;
   /// Refinement after the search: weak ties to the odometry prediction, 3/m in translation and
   /// 5/rad in heading. Decision 0007 had 10/m and 0 (40 spiralled the Intel map); with scans a
-  /// metre apart both were wrong (decision 0012). A heading left free slides into the wrong
+  /// metre apart both were wrong (decision 0013). A heading left free slides into the wrong
   /// optimum where a scan's far points meet known walls (7-10 deg jumps at turns even from a
   /// perfect prior). A translation tied at 10/m carries the odometry's scale error (2 % in the
   /// test protocol) along corridors, where the walls pin the pose only across them, and the loops
@@ -115,7 +115,7 @@ struct LaserSlamOptions {
   /// switched off and the graph optimised again: a wrong closure must not bend the map (0: never).
   /// Off by default: with stiff local constraints a correct closure after metres of drift keeps a
   /// residual of several sigmas, and gates of 10 and 30 sigmas cost more good closures than they
-  /// caught wrong ones on the dev logs (decision 0012).
+  /// caught wrong ones on the dev logs (decision 0013).
   double loop_outlier_sigmas = 0.0;
   /// Optimise the graph after this many new nodes when new loop constraints came in.
   int optimize_every_n_nodes = 60;
@@ -126,7 +126,7 @@ struct LaserSlamOptions {
   ConstraintSigmas submap_sigmas{0.02, 0.01};
   /// Both grow by this for every metre between the node and the one before it: local SLAM's
   /// error over a metre between scans is larger than over 0.2 m, and a graph that holds sparse
-  /// scans as stiffly as dense ones cannot take a loop closure's correction (decision 0012).
+  /// scans as stiffly as dense ones cannot take a loop closure's correction (decision 0013).
   ConstraintSigmas local_sigmas_per_m{0.03, 0.01};
   /// A node matched into an older submap (robust): fixed sigmas, or (when loop_hessian_scale > 0)
   /// the refinement's J^T J times loop_hessian_scale, so a match along a corridor constrains only
@@ -136,7 +136,7 @@ struct LaserSlamOptions {
   ConstraintSigmas loop_sigmas{0.02, 0.01};
   double loop_hessian_scale = 0.0;
   /// Huber scale of robust constraints, in units of the whitened residual. 5 rather than 1: a
-  /// correct closure after metres of drift must be able to pull (decision 0012).
+  /// correct closure after metres of drift must be able to pull (decision 0013).
   double huber_scale = 5.0;
 
   /// The final map: every node's scan at its optimised pose.

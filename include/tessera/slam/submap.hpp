@@ -23,7 +23,7 @@ struct SubmapOptions {
   /// ... or metres travelled since the newest submap started, whichever comes first (0: scans
   /// only). Sizes submaps by the ground they cover, so that a log with a scan every metre does not
   /// build 180-metre submaps whose walls no longer agree: odometry and matching drift grow with
-  /// distance, not with the number of scans (decision 0012).
+  /// distance, not with the number of scans (decision 0013).
   double travel_per_submap_m = 15.0;
   /// Side of a new submap's grid; it grows as scans reach beyond it.
   double initial_size_m = 16.0;

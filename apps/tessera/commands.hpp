@@ -60,13 +60,15 @@ class RenderCommand : public Command {
   int pixels_per_cell_ = 0;
 };
 
-/// tessera info: describes a map file.
+/// tessera info: describes a map file, or a ROS bag (topics, types, counts, rates, duration).
 class InfoCommand : public Command {
  public:
   explicit InfoCommand(CLI::App& app);
   [[nodiscard]] int run() const;
 
  private:
+  [[nodiscard]] int run_bag() const;
+
   std::filesystem::path file_;
   std::optional<double> map_resolution_m_;
   bool json_ = false;

@@ -35,6 +35,9 @@ Status read_storage_file(const std::filesystem::path& path, BagBuilder& builder,
                          std::string_view format) {
   const std::string head = file_head(path, 16);
   builder.add_file(path);
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  builder.set_size_hint(ec ? 0 : static_cast<std::size_t>(size));
   if (head.starts_with(kMcapMagic)) {
     if (format.empty()) builder.set_format("MCAP");
     return io_internal::read_mcap_file(path, builder);
@@ -52,7 +55,6 @@ Status read_storage_file(const std::filesystem::path& path, BagBuilder& builder,
                        ": legacy ROS bag format 1.2 (#ROSRECORD V1.2) is not supported; "
                        "convert it with 'rosbag fix' or 'rosbag reindex' to format 2.0");
   }
-  std::error_code ec;
   if (!std::filesystem::exists(path, ec)) return input_error(path.string() + ": no such file");
   return input_error(path.string() +
                      ": not a ROS bag (expected '#ROSBAG V2.0', an MCAP or a sqlite3 file)");

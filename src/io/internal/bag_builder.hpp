@@ -40,11 +40,15 @@ class BagBuilder {
     if (topic.message_count == 0 || log_time_ns > topic.last_ns) topic.last_ns = log_time_ns;
     ++topic.message_count;
     if (!keep_[t]) return;
+    if (bag_.data.empty()) bag_.data.reserve(size_hint_);
     bag_.messages.push_back({t, log_time_ns, bag_.data.size(), data.size()});
     bag_.data.insert(bag_.data.end(), data.begin(), data.end());
   }
 
   void add_file(const std::filesystem::path& file) { bag_.files.push_back(file); }
+  /// Bytes the kept messages may take (the storage file's size): reserved on the first kept
+  /// message, so that keeping a whole bag does not copy it again while growing.
+  void set_size_hint(std::size_t bytes) { size_hint_ = bytes; }
   void set_format(std::string format) { bag_.format = std::move(format); }
   [[nodiscard]] RosBag finish() && { return std::move(bag_); }
 
@@ -52,6 +56,7 @@ class BagBuilder {
   const BagReadOptions& options_;
   RosBag bag_;
   std::vector<bool> keep_;
+  std::size_t size_hint_ = 0;
   std::map<std::pair<std::string, std::string>, std::size_t> index_;
 };
 

@@ -59,7 +59,7 @@ struct RosBag {
   /// Earliest and latest log time over all topics, nanoseconds; 0 when the bag is empty.
   [[nodiscard]] std::int64_t start_ns() const;
   [[nodiscard]] std::int64_t end_ns() const;
-  [[nodiscard]] double duration_s() const { return 1e-9 * static_cast<double>(end_ns() - start_ns()); }
+  [[nodiscard]] double duration_s() const;
 };
 
 struct BagReadOptions {

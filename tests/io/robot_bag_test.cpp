@@ -86,6 +86,22 @@ TEST(RobotBag, DriverNoReadingConventionsAllBecomeNoReturns) {
   EXPECT_EQ(r->log.scans[0].laser_in_robot.theta, 0.0);
 }
 
+TEST(RobotBag, McapWithRos1MessagesConvertsLikeTheRos1Bag) {
+  const auto run = support::synthetic_run(RosEncoding::kRos1, 6, 36);
+  TempDir dir;
+  support::write_bytes(dir / "r.mcap", support::write_mcap(run.topics, run.messages, "lz4", "ros1"));
+  Result<RobotBag> from_mcap = read_robot_bag(dir / "r.mcap");
+  Result<RobotBag> from_bag = convert(run);
+  ASSERT_TRUE(from_mcap.ok()) << from_mcap.error().message;
+  ASSERT_TRUE(from_bag.ok()) << from_bag.error().message;
+  ASSERT_EQ(from_mcap->log.scans.size(), from_bag->log.scans.size());
+  for (std::size_t i = 0; i < from_bag->log.scans.size(); ++i) {
+    EXPECT_EQ(from_mcap->log.scans[i].t_s, from_bag->log.scans[i].t_s);
+    EXPECT_EQ(from_mcap->log.scans[i].scan.ranges_m, from_bag->log.scans[i].scan.ranges_m);
+    EXPECT_EQ(from_mcap->log.scans[i].odometry.x, from_bag->log.scans[i].odometry.x);
+  }
+}
+
 TEST(RobotBag, BaseFrameOptionMovesOdometryAndLaserPoseToThatFrame) {
   RobotBagOptions options;
   options.base_frame = "base_link";  // identical to base_footprint in the synthetic tf

@@ -206,6 +206,10 @@ TEST(RosBagRealData, Ros2ObstacleAvoiderTopicsAndCounts) {
   EXPECT_EQ(c.at("/tf_static"), 2u);
   EXPECT_EQ(bag->message_count(), 1545u);  // metadata.yaml's message_count
   EXPECT_NEAR(bag->duration_s(), 32.448, 0.001);  // metadata.yaml's duration
+  // The .db3 file on its own reads the same.
+  Result<RosBag> db3 = read_ros_bag(path / "obstacle-avoider_0.db3");
+  ASSERT_TRUE(db3.ok()) << db3.error().message;
+  EXPECT_EQ(counts(*db3), c);
 }
 
 TEST(RosBagRealData, Ros1NeatoBagTopicsAndCounts) {

@@ -6,6 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <sqlite3.h>
+
 #include <map>
 
 #include "support/data.hpp"
@@ -162,6 +164,35 @@ TEST(RosBag, McapRecordLengthBeyondTheFileIsRefused) {
   Result<RosBag> bag = read_ros_bag(dir / "long.mcap");
   ASSERT_FALSE(bag.ok());
   EXPECT_THAT(bag.error().message, HasSubstr("long.mcap: byte 8: record of"));
+}
+
+TEST(RosBag, SqliteFileWithoutRosbag2TablesIsNamed) {
+  TempDir dir;
+  const auto path = dir / "other.db3";
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db, "CREATE TABLE notes(id INTEGER, text TEXT)", nullptr, nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(db);
+  Result<RosBag> bag = read_ros_bag(path);
+  ASSERT_FALSE(bag.ok());
+  EXPECT_EQ(bag.error().kind, ErrorKind::kInput);
+  EXPECT_THAT(bag.error().message, HasSubstr("other.db3: not a rosbag2 sqlite3 file"));
+}
+
+TEST(RosBag, Rosbag2FolderProblemsNameMetadataYaml) {
+  TempDir dir;
+  support::write_bytes(dir / "metadata.yaml", "rosbag2_bagfile_information:\n  storage_identifier: [\n");
+  EXPECT_THAT(read_ros_bag(dir.path()).error().message, HasSubstr("metadata.yaml:"));
+  support::write_bytes(dir / "metadata.yaml",
+                       "rosbag2_bagfile_information:\n  storage_identifier: sqlite3\n"
+                       "  relative_file_paths: [gone_0.db3]\n");
+  EXPECT_THAT(read_ros_bag(dir.path()).error().message,
+              HasSubstr("metadata.yaml: storage file gone_0.db3 is missing"));
+  support::write_bytes(dir / "metadata.yaml",
+                       "rosbag2_bagfile_information:\n  storage_identifier: sqlite3\n"
+                       "  compression_format: zstd\n  relative_file_paths: [a_0.db3.zstd]\n");
+  EXPECT_THAT(read_ros_bag(dir.path()).error().message, HasSubstr("compression_format 'zstd'"));
 }
 
 TEST(RosBag, FileThatIsNoBagIsNamed) {

@@ -274,6 +274,7 @@ TEST(RosBagRealData, ScanMatcherDemoWithItsWrongIndexLengthsReads) {
   EXPECT_EQ(first->ranges_m.size(), 681u);
   EXPECT_NEAR(first->angle_min_rad, -2.08621, 1e-5);
   EXPECT_NEAR(first->angle_increment_rad, 0.00613592, 1e-8);
+  EXPECT_NEAR(first->range_min_m, 0.02, 1e-6);
   EXPECT_NEAR(first->range_max_m, 5.6, 1e-6);
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "internal/pose_interpolation.hpp"
 #include "internal/time_ns.hpp"
 #include "tessera/io/ros_messages.hpp"
 #include "tessera/io/tf_tree.hpp"
@@ -87,10 +88,7 @@ Pose2 odometry_at(const std::vector<Odom>& odom, std::int64_t t_ns) {
   if (b.t_ns == a.t_ns) return b.T_odom_child;
   const double f =
       io_internal::ns_difference(t_ns, a.t_ns) / io_internal::ns_difference(b.t_ns, a.t_ns);
-  const double dtheta = normalize_angle(b.T_odom_child.theta - a.T_odom_child.theta);
-  return {a.T_odom_child.x + f * (b.T_odom_child.x - a.T_odom_child.x),
-          a.T_odom_child.y + f * (b.T_odom_child.y - a.T_odom_child.y),
-          normalize_angle(a.T_odom_child.theta + f * dtheta)};
+  return io_internal::interpolate_pose(a.T_odom_child, b.T_odom_child, f);
 }
 
 }  // namespace

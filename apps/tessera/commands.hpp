@@ -153,7 +153,7 @@ class SlamCommand : public Command {
   std::optional<std::filesystem::path> bag_;  // a ROS bag instead of a CARMEN log
   std::string scan_topic_;                    // --bag: empty chooses by type
   std::string odom_topic_;
-  std::string base_frame_;                    // --bag: empty is the odometry's child frame
+  std::string base_frame_;  // --bag: empty is the odometry's child frame
   WorldSource world_;
   std::uint64_t seed_ = 1;
   double duration_s_ = 300.0;

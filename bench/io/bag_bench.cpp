@@ -44,8 +44,9 @@ struct BenchBags {
       const bool ros1_bag = e == RosEncoding::kRos1;
       const auto path = dir / (ros1_bag ? "run.bag" : "run.mcap");
       std::ofstream out(path, std::ios::binary);
-      const std::string file = ros1_bag ? support::write_ros1_bag(run.topics, run.messages, "none", 400)
-                                        : support::write_mcap(run.topics, run.messages, "", "cdr", 400);
+      const std::string file = ros1_bag
+                                   ? support::write_ros1_bag(run.topics, run.messages, "none", 400)
+                                   : support::write_mcap(run.topics, run.messages, "", "cdr", 400);
       out.write(file.data(), static_cast<std::streamsize>(file.size()));
       (ros1_bag ? ros1 : mcap) = path;
       if (ros1_bag) message_bytes = bytes;

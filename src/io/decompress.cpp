@@ -25,10 +25,10 @@ std::string bz2(Bytes in, std::vector<std::uint8_t>& out) {
   }
   auto out_len = static_cast<unsigned int>(out.size());
   // libbz2 takes non-const pointers but does not write the source.
-  const int rc = BZ2_bzBuffToBuffDecompress(
-      reinterpret_cast<char*>(out.data()), &out_len,
-      const_cast<char*>(reinterpret_cast<const char*>(in.data())),
-      static_cast<unsigned int>(in.size()), 0, 0);
+  const int rc =
+      BZ2_bzBuffToBuffDecompress(reinterpret_cast<char*>(out.data()), &out_len,
+                                 const_cast<char*>(reinterpret_cast<const char*>(in.data())),
+                                 static_cast<unsigned int>(in.size()), 0, 0);
   if (rc == BZ_OUTBUFF_FULL) return "bz2: decompresses to more than the chunk's stated size";
   if (rc != BZ_OK) return "bz2: corrupt data (libbz2 error " + std::to_string(rc) + ")";
   if (out_len != out.size()) return size_mismatch(out_len, out.size());
@@ -46,8 +46,8 @@ std::string lz4(Bytes in, std::vector<std::uint8_t>& out) {
   while (in_pos < in.size()) {
     std::size_t in_n = in.size() - in_pos;
     std::size_t out_n = out.size() - out_pos;
-    const std::size_t hint =
-        LZ4F_decompress(ctx.get(), out.data() + out_pos, &out_n, in.data() + in_pos, &in_n, nullptr);
+    const std::size_t hint = LZ4F_decompress(ctx.get(), out.data() + out_pos, &out_n,
+                                             in.data() + in_pos, &in_n, nullptr);
     if (LZ4F_isError(hint)) return std::string("lz4: ") + LZ4F_getErrorName(hint);
     in_pos += in_n;
     out_pos += out_n;

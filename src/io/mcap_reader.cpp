@@ -3,10 +3,10 @@
 // (0x03: id u16, name, encoding, data), Channel (0x04: id u16, schema_id u16, topic,
 // message_encoding, metadata), Message (0x05: channel_id u16, sequence u32, log_time u64,
 // publish_time u64, data) and Chunk (0x06: message_start_time, message_end_time,
-// uncompressed_size u64, uncompressed_crc u32, compression "" | "zstd" | "lz4", records u64-prefixed)
-// whose records are Schemas, Channels and Messages. Index, statistics, attachment, metadata and
-// summary records are skipped (the summary repeats schemas and channels; repeats are ignored).
-// Strings are u32-length-prefixed UTF-8. CRCs are not checked.
+// uncompressed_size u64, uncompressed_crc u32, compression "" | "zstd" | "lz4", records
+// u64-prefixed) whose records are Schemas, Channels and Messages. Index, statistics, attachment,
+// metadata and summary records are skipped (the summary repeats schemas and channels; repeats are
+// ignored). Strings are u32-length-prefixed UTF-8. CRCs are not checked.
 #include <map>
 #include <string>
 
@@ -205,8 +205,8 @@ class McapReader {
 
   std::string file_;
   BagBuilder& builder_;
-  std::map<std::uint16_t, std::string> schemas_;      // id -> schema name (the message type)
-  std::map<std::uint16_t, std::size_t> channels_;     // id -> topic
+  std::map<std::uint16_t, std::string> schemas_;   // id -> schema name (the message type)
+  std::map<std::uint16_t, std::size_t> channels_;  // id -> topic
   std::vector<std::uint8_t> buffer_;
 };
 
@@ -220,8 +220,8 @@ Status read_mcap_file(const std::filesystem::path& path, BagBuilder& builder) {
   McapReader reader(file, builder);
   bool footer = false;
   const Bytes all = as_bytes(*bytes);
-  if (Status s = reader.read_records(all.subspan(kMagic.size()), kMagic.size(), false,
-                                     file + ": ", footer);
+  if (Status s = reader.read_records(all.subspan(kMagic.size()), kMagic.size(), false, file + ": ",
+                                     footer);
       !s) {
     return s;
   }

@@ -27,9 +27,8 @@ std::string join_names(const std::vector<const BagTopic*>& topics) {
 }
 
 /// The topic `wanted` names, or the only topic of `type`.
-Result<std::size_t> choose_topic(const RosBag& bag, const std::string& file,
-                                 std::string_view type, const std::string& wanted,
-                                 std::string_view option) {
+Result<std::size_t> choose_topic(const RosBag& bag, const std::string& file, std::string_view type,
+                                 const std::string& wanted, std::string_view option) {
   std::vector<const BagTopic*> candidates;
   for (const BagTopic& t : bag.topics) {
     if (ros_type_is(t.type, type)) candidates.push_back(&t);
@@ -44,9 +43,9 @@ Result<std::size_t> choose_topic(const RosBag& bag, const std::string& file,
       }
       return i;
     }
-    return usage_error(file + ": " + std::string(option) + " " + wanted +
-                       ": no such topic; " + std::string(type) + " topics: " +
-                       (candidates.empty() ? "none" : join_names(candidates)));
+    return usage_error(file + ": " + std::string(option) + " " + wanted + ": no such topic; " +
+                       std::string(type) +
+                       " topics: " + (candidates.empty() ? "none" : join_names(candidates)));
   }
   if (candidates.empty()) {
     return input_error(file + ": no " + std::string(type) + " topic in the bag" +
@@ -188,8 +187,8 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     if (!base_is_child) {
       Result<RosTransform> T_child_base = tf.lookup(child_frame, out.base_frame, stamp);
       if (!T_child_base) {
-        return input_error(file + ": base frame '" + out.base_frame + "': " +
-                           T_child_base.error().message + " (the odometry's child frame)");
+        return input_error(file + ": base frame '" + out.base_frame +
+                           "': " + T_child_base.error().message + " (the odometry's child frame)");
       }
       T_odom_base = T_odom_base * planar_pose(*T_child_base);
     }
@@ -200,9 +199,8 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
       if (!T_base_laser) {
         std::string known;
         for (const std::string& f : tf.frames()) known += (known.empty() ? "" : ", ") + f;
-        return input_error(at(file, scans_t, i) + ": laser pose: " +
-                           T_base_laser.error().message + " (tf frames: " +
-                           (known.empty() ? "none" : known) + ")");
+        return input_error(at(file, scans_t, i) + ": laser pose: " + T_base_laser.error().message +
+                           " (tf frames: " + (known.empty() ? "none" : known) + ")");
       }
       s.laser_in_robot = planar_pose(*T_base_laser);
     }
@@ -212,8 +210,8 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     s.scan.max_range_m = msg.range_max_m;
     s.scan.ranges_m.reserve(msg.ranges_m.size());
     for (const float r : msg.ranges_m) {
-      const bool valid = std::isfinite(r) && r > 0.0F && r >= msg.range_min_m &&
-                         r <= msg.range_max_m;
+      const bool valid =
+          std::isfinite(r) && r > 0.0F && r >= msg.range_min_m && r <= msg.range_max_m;
       if (!valid) ++out.no_return_readings;
       s.scan.ranges_m.push_back(valid ? static_cast<double>(r) : s.scan.max_range_m);
     }
@@ -225,8 +223,7 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
   return out;
 }
 
-Result<RobotBag> read_robot_bag(const std::filesystem::path& path,
-                                const RobotBagOptions& options) {
+Result<RobotBag> read_robot_bag(const std::filesystem::path& path, const RobotBagOptions& options) {
   BagReadOptions read;
   read.keep = robot_bag_needs;
   Result<RosBag> bag = read_ros_bag(path, read);

@@ -1,10 +1,11 @@
 // ROS bag format 2.0 (wiki.ros.org/Bags/Format/2.0): "#ROSBAG V2.0\n", then records
-// <header_len u32><header><data_len u32><data>, a header being fields <field_len u32><name>=<value>.
-// Records: bag header (op 0x03: index_pos u64, conn_count, chunk_count), chunk (0x05: compression
-// "none" | "bz2" | "lz4", size = uncompressed bytes) whose data holds connection (0x07) and message
-// data (0x02: conn u32, time = secs u32 + nsecs u32) records, index data (0x04) after each chunk,
-// and at index_pos the connection and chunk info (0x06: chunk_pos u64, ...) records.
-// Reading follows the index as rosbag's own reader does (bag header -> index_pos -> chunk infos
+// <header_len u32><header><data_len u32><data>, a header being fields <field_len
+// u32><name>=<value>. Records: bag header (op 0x03: index_pos u64, conn_count, chunk_count), chunk
+// (0x05: compression "none" | "bz2" | "lz4", size = uncompressed bytes) whose data holds connection
+// (0x07) and message data (0x02: conn u32, time = secs u32 + nsecs u32) records, index data (0x04)
+// after each chunk, and at index_pos the connection and chunk info (0x06: chunk_pos u64, ...)
+// records. Reading follows the index as rosbag's own reader does (bag header -> index_pos -> chunk
+// infos
 // -> each chunk at its chunk_pos), so the index data records between chunks are never walked:
 // rosbag writers of 2012 wrote their data_len wrong (laser_scan_matcher's demo.bag: 5560 for 278
 // 12-byte entries). A bag whose recording was cut off (index_pos 0) is read front to back.
@@ -143,9 +144,10 @@ class Ros1BagReader {
         if (!chunk_pos) return index.error(r->offset, "chunk info record without chunk_pos");
         chunk_positions.emplace_back(r->offset, *chunk_pos);
       } else {
-        return index.error(r->offset, "expected connection or chunk info records after "
-                                      "index_pos, found op " +
-                                          std::to_string(op.value_or(0)));
+        return index.error(r->offset,
+                           "expected connection or chunk info records after "
+                           "index_pos, found op " +
+                               std::to_string(op.value_or(0)));
       }
     }
     for (const auto& [info_at, chunk_pos] : chunk_positions) {
@@ -210,7 +212,8 @@ class Ros1BagReader {
       return records.error(r.offset, "connection " + std::to_string(*conn) + ": " + what);
     }
     const auto type = field_text(data, "type");
-    if (!type) return records.error(r.offset, "connection " + std::to_string(*conn) + " has no type");
+    if (!type)
+      return records.error(r.offset, "connection " + std::to_string(*conn) + " has no type");
     if (connections_.find(*conn) == connections_.end()) {
       connections_[*conn] = builder_.topic(std::string(*topic), std::string(*type), "ros1");
     }
@@ -293,8 +296,8 @@ Status read_ros1_bag_file(const std::filesystem::path& path, BagBuilder& builder
   }
   if (*index_pos < kMagic.size() + first.position() || *index_pos > all.size()) {
     return first.error(kMagic.size(), "index_pos " + std::to_string(*index_pos) +
-                                          " lies outside the file (" +
-                                          std::to_string(all.size()) + " bytes)");
+                                          " lies outside the file (" + std::to_string(all.size()) +
+                                          " bytes)");
   }
   return reader.read_indexed(all, static_cast<std::size_t>(*index_pos));
 }

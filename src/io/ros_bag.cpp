@@ -117,7 +117,9 @@ double BagTopic::rate_hz() const {
   return static_cast<double>(message_count - 1) / span_s;
 }
 
-double RosBag::duration_s() const { return 1e-9 * io_internal::ns_difference(end_ns(), start_ns()); }
+double RosBag::duration_s() const {
+  return 1e-9 * io_internal::ns_difference(end_ns(), start_ns());
+}
 
 std::uint64_t RosBag::message_count() const {
   std::uint64_t n = 0;
@@ -155,9 +157,8 @@ Result<RosBag> read_ros_bag(const std::filesystem::path& path, const BagReadOpti
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
   if (!std::filesystem::exists(status)) return input_error(path.string() + ": no such file");
-  const Status read = std::filesystem::is_directory(status)
-                          ? read_rosbag2_folder(path, builder)
-                          : read_storage_file(path, builder, "");
+  const Status read = std::filesystem::is_directory(status) ? read_rosbag2_folder(path, builder)
+                                                            : read_storage_file(path, builder, "");
   if (!read) return read.error();
   return std::move(builder).finish();
 }

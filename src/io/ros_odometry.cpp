@@ -23,8 +23,7 @@ Result<OdometryMessage> decode(Reader r) {
 
 }  // namespace
 
-Result<OdometryMessage> decode_odometry(std::span<const std::uint8_t> bytes,
-                                        RosEncoding encoding) {
+Result<OdometryMessage> decode_odometry(std::span<const std::uint8_t> bytes, RosEncoding encoding) {
   if (encoding == RosEncoding::kRos1) return decode(io_internal::Ros1Reader(bytes));
   return decode(io_internal::CdrReader(bytes));
 }

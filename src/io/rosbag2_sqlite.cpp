@@ -69,8 +69,8 @@ Status read_rosbag2_sqlite_file(const std::filesystem::path& path, BagBuilder& b
   };
 
   Statement topics;
-  if (Status s = prepare("SELECT id, name, type, serialization_format FROM topics ORDER BY id",
-                         topics);
+  if (Status s =
+          prepare("SELECT id, name, type, serialization_format FROM topics ORDER BY id", topics);
       !s) {
     return s;
   }
@@ -86,8 +86,8 @@ Status read_rosbag2_sqlite_file(const std::filesystem::path& path, BagBuilder& b
   }
 
   Statement messages;
-  if (Status s = prepare(
-          "SELECT topic_id, timestamp, data FROM messages ORDER BY timestamp, id", messages);
+  if (Status s = prepare("SELECT topic_id, timestamp, data FROM messages ORDER BY timestamp, id",
+                         messages);
       !s) {
     return s;
   }

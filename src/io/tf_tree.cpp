@@ -18,10 +18,9 @@ struct Quat {
 Quat rotation(const RosTransform& T) { return {T.qx, T.qy, T.qz, T.qw}; }
 
 Quat multiply(const Quat& a, const Quat& b) {
-  return {a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
-          a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
+  return {
+      a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y, a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+      a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w, a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
 }
 
 Quat normalized(const Quat& q) {
@@ -68,8 +67,8 @@ RosTransform interpolate(const RosTransform& a, const RosTransform& b, double f)
   }
   const Quat q = normalized({qa.x + f * (qb.x - qa.x), qa.y + f * (qb.y - qa.y),
                              qa.z + f * (qb.z - qa.z), qa.w + f * (qb.w - qa.w)});
-  return make(a.x_m + f * (b.x_m - a.x_m), a.y_m + f * (b.y_m - a.y_m),
-              a.z_m + f * (b.z_m - a.z_m), q);
+  return make(a.x_m + f * (b.x_m - a.x_m), a.y_m + f * (b.y_m - a.y_m), a.z_m + f * (b.z_m - a.z_m),
+              q);
 }
 
 }  // namespace

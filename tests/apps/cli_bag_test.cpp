@@ -33,15 +33,20 @@ TEST(CliBag, InfoListsTheRos2BagsTopicsAndCounts) {
   const support::CliRun text = run_cli("info " + fsc.string());
   ASSERT_EQ(text.exit_code, 0) << text.output;
   EXPECT_THAT(text.output, HasSubstr("rosbag2 (sqlite3)"));
-  EXPECT_THAT(text.output, MatchesRegex("(.|\n)*/scan +sensor_msgs/msg/LaserScan +280 +4\\.43 +cdr(.|\n)*"));
+  EXPECT_THAT(text.output,
+              MatchesRegex("(.|\n)*/scan +sensor_msgs/msg/LaserScan +280 +4\\.43 +cdr(.|\n)*"));
   EXPECT_THAT(text.output, HasSubstr("3127 on 9 topics"));
   const support::CliRun json = run_cli("info --json " + oa.string());
   ASSERT_EQ(json.exit_code, 0) << json.output;
-  EXPECT_EQ(json_counts(json.output),
-            (std::map<std::string, int>{{"/scan", 153}, {"/odom", 166}, {"/tf", 498},
-                                        {"/tf_static", 2}, {"/cmd_vel", 88}, {"/stable_scan", 153},
-                                        {"/projected_stable_scan", 153}, {"/bump", 166},
-                                        {"/accel", 166}}));
+  EXPECT_EQ(json_counts(json.output), (std::map<std::string, int>{{"/scan", 153},
+                                                                  {"/odom", 166},
+                                                                  {"/tf", 498},
+                                                                  {"/tf_static", 2},
+                                                                  {"/cmd_vel", 88},
+                                                                  {"/stable_scan", 153},
+                                                                  {"/projected_stable_scan", 153},
+                                                                  {"/bump", 166},
+                                                                  {"/accel", 166}}));
   EXPECT_NEAR(nlohmann::json::parse(json.output)["duration_s"].get<double>(), 32.448, 0.001);
 }
 
@@ -50,10 +55,12 @@ TEST(CliBag, InfoListsTheRos1NeatoBag) {
   TESSERA_REQUIRE_DATA(bag);
   const support::CliRun json = run_cli("info " + bag.string() + " --json");
   ASSERT_EQ(json.exit_code, 0) << json.output;
-  EXPECT_EQ(json_counts(json.output),
-            (std::map<std::string, int>{{"/scan", 404}, {"/odom", 413}, {"/tf", 2177},
-                                        {"/tf_static", 1}, {"/stable_scan", 405},
-                                        {"/cmd_vel", 4360}}));
+  EXPECT_EQ(json_counts(json.output), (std::map<std::string, int>{{"/scan", 404},
+                                                                  {"/odom", 413},
+                                                                  {"/tf", 2177},
+                                                                  {"/tf_static", 1},
+                                                                  {"/stable_scan", 405},
+                                                                  {"/cmd_vel", 4360}}));
   EXPECT_EQ(nlohmann::json::parse(json.output)["format"], "ROS 1 bag 2.0");
 }
 
@@ -62,7 +69,8 @@ TEST(CliBag, InfoOnALegacyBagSaysItIsFormat12) {
   TESSERA_REQUIRE_DATA(bag);
   const support::CliRun run = run_cli("info " + bag.string());
   EXPECT_EQ(run.exit_code, 3) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("laser_scan_sparsifier_demo_v1.2.bag: legacy ROS bag format 1.2"));
+  EXPECT_THAT(run.output,
+              HasSubstr("laser_scan_sparsifier_demo_v1.2.bag: legacy ROS bag format 1.2"));
 }
 
 /// tessera slam --bag on a real Neato bag: exit 0, every scan used, the bag section of the report.
@@ -143,7 +151,9 @@ TEST(CliBag, MessageLengthRunningPastItsRecordIsBadInput) {
   const std::uint32_t huge = 100000;                           // ranges count at byte 4+8+4+15+28
   std::memcpy(scan.data() + 4 + 8 + 4 + 15 + 28, &huge, 4);
   support::write_bytes(dir / "long.bag", support::write_ros1_bag(run.topics, run.messages, "bz2"));
-  expect_bad_bag(dir, dir / "long.bag", "/scan message 4: sensor_msgs/LaserScan: byte 63: ranges of 100000 elements runs past the end");
+  expect_bad_bag(dir, dir / "long.bag",
+                 "/scan message 4: sensor_msgs/LaserScan: byte 63: ranges of 100000 elements runs "
+                 "past the end");
 }
 
 TEST(CliBag, CdrStringWithoutTerminatorIsBadInput) {

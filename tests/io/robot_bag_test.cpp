@@ -15,8 +15,8 @@
 namespace tessera {
 namespace {
 
-using ::testing::HasSubstr;
 using support::TempDir;
+using ::testing::HasSubstr;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -72,9 +72,10 @@ TEST(RobotBag, DriverNoReadingConventionsAllBecomeNoReturns) {
   scan.angle_increment_rad = 0.1F;
   scan.range_min_m = 0.1F;
   scan.range_max_m = 4.0F;
-  scan.ranges_m = {0.0F, std::nanf(""), std::numeric_limits<float>::infinity(), 0.05F, 4.5F,
+  scan.ranges_m = {0.0F,  std::nanf(""), std::numeric_limits<float>::infinity(), 0.05F, 4.5F,
                    -1.0F, 2.0F};
-  run.messages.back() = {0, scan.header.stamp_ns, support::encode_laser_scan(scan, RosEncoding::kCdr)};
+  run.messages.back() = {0, scan.header.stamp_ns,
+                         support::encode_laser_scan(scan, RosEncoding::kCdr)};
   TempDir dir;
   support::write_bytes(dir / "r.mcap", support::write_mcap(run.topics, run.messages, ""));
   Result<RobotBag> r = read_robot_bag(dir / "r.mcap");
@@ -89,7 +90,8 @@ TEST(RobotBag, DriverNoReadingConventionsAllBecomeNoReturns) {
 TEST(RobotBag, McapWithRos1MessagesConvertsLikeTheRos1Bag) {
   const auto run = support::synthetic_run(RosEncoding::kRos1, 6, 36);
   TempDir dir;
-  support::write_bytes(dir / "r.mcap", support::write_mcap(run.topics, run.messages, "lz4", "ros1"));
+  support::write_bytes(dir / "r.mcap",
+                       support::write_mcap(run.topics, run.messages, "lz4", "ros1"));
   Result<RobotBag> from_mcap = read_robot_bag(dir / "r.mcap");
   Result<RobotBag> from_bag = convert(run);
   ASSERT_TRUE(from_mcap.ok()) << from_mcap.error().message;
@@ -181,7 +183,8 @@ Pose2 static_chain(const std::filesystem::path& path, const std::vector<std::str
   EXPECT_TRUE(bag.ok());
   std::map<std::string, RosTransform> last;  // child -> T_parent_child
   for (const BagMessage& m : bag->messages) {
-    const RosEncoding e = bag->topics[m.topic].serialization == "cdr" ? RosEncoding::kCdr : RosEncoding::kRos1;
+    const RosEncoding e =
+        bag->topics[m.topic].serialization == "cdr" ? RosEncoding::kCdr : RosEncoding::kRos1;
     Result<TfMessage> tf = decode_tf_message(bag->bytes(m), e);
     if (!tf.ok()) {
       ADD_FAILURE() << tf.error().message;
@@ -224,7 +227,9 @@ void expect_neato_bag(const std::filesystem::path& path, std::size_t scans, std:
   BagReadOptions keep;
   keep.keep = [](const BagTopic& t) { return t.name == "/scan"; };
   Result<RosBag> bag = read_ros_bag(path, keep);
-  const RosEncoding e = bag->topics[bag->messages[0].topic].serialization == "cdr" ? RosEncoding::kCdr : RosEncoding::kRos1;
+  const RosEncoding e = bag->topics[bag->messages[0].topic].serialization == "cdr"
+                            ? RosEncoding::kCdr
+                            : RosEncoding::kRos1;
   Result<LaserScanMessage> first = decode_laser_scan(bag->bytes(bag->messages[0]), e);
   ASSERT_TRUE(first.ok());
   EXPECT_EQ(first->ranges_m.size(), 361u);

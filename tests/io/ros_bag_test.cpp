@@ -5,7 +5,6 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
 #include <sqlite3.h>
 
 #include <map>
@@ -17,8 +16,8 @@
 namespace tessera {
 namespace {
 
-using ::testing::HasSubstr;
 using support::TempDir;
+using ::testing::HasSubstr;
 
 std::map<std::string, std::uint64_t> counts(const RosBag& bag) {
   std::map<std::string, std::uint64_t> out;
@@ -51,7 +50,8 @@ class Ros1Compression : public ::testing::TestWithParam<const char*> {};
 TEST_P(Ros1Compression, WrittenBagReadsBackWithEveryMessage) {
   TempDir dir;
   const auto run = support::synthetic_run(RosEncoding::kRos1, 40, 90);
-  support::write_bytes(dir / "run.bag", support::write_ros1_bag(run.topics, run.messages, GetParam(), 30));
+  support::write_bytes(dir / "run.bag",
+                       support::write_ros1_bag(run.topics, run.messages, GetParam(), 30));
   Result<RosBag> bag = read_ros_bag(dir / "run.bag", keep_all());
   ASSERT_TRUE(bag.ok()) << bag.error().message;
   EXPECT_EQ(bag->format, "ROS 1 bag 2.0");
@@ -152,7 +152,8 @@ TEST(RosBag, TruncatedRos1BagIsAnError) {
 
 TEST(RosBag, TruncatedMcapIsAnError) {
   const auto run = support::synthetic_run(RosEncoding::kCdr, 10, 20);
-  expect_truncations_refused(support::write_mcap(run.topics, run.messages, "zstd", "cdr", 4), "t.mcap");
+  expect_truncations_refused(support::write_mcap(run.topics, run.messages, "zstd", "cdr", 4),
+                             "t.mcap");
 }
 
 TEST(RosBag, McapRecordLengthBeyondTheFileIsRefused) {
@@ -171,8 +172,9 @@ TEST(RosBag, SqliteFileWithoutRosbag2TablesIsNamed) {
   const auto path = dir / "other.db3";
   sqlite3* db = nullptr;
   ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
-  ASSERT_EQ(sqlite3_exec(db, "CREATE TABLE notes(id INTEGER, text TEXT)", nullptr, nullptr, nullptr),
-            SQLITE_OK);
+  ASSERT_EQ(
+      sqlite3_exec(db, "CREATE TABLE notes(id INTEGER, text TEXT)", nullptr, nullptr, nullptr),
+      SQLITE_OK);
   sqlite3_close(db);
   Result<RosBag> bag = read_ros_bag(path);
   ASSERT_FALSE(bag.ok());
@@ -182,7 +184,8 @@ TEST(RosBag, SqliteFileWithoutRosbag2TablesIsNamed) {
 
 TEST(RosBag, Rosbag2FolderProblemsNameMetadataYaml) {
   TempDir dir;
-  support::write_bytes(dir / "metadata.yaml", "rosbag2_bagfile_information:\n  storage_identifier: [\n");
+  support::write_bytes(dir / "metadata.yaml",
+                       "rosbag2_bagfile_information:\n  storage_identifier: [\n");
   EXPECT_THAT(read_ros_bag(dir.path()).error().message, HasSubstr("metadata.yaml:"));
   support::write_bytes(dir / "metadata.yaml",
                        "rosbag2_bagfile_information:\n  storage_identifier: sqlite3\n"
@@ -235,7 +238,7 @@ TEST(RosBagRealData, Ros2ObstacleAvoiderTopicsAndCounts) {
   EXPECT_EQ(c.at("/odom"), 166u);
   EXPECT_EQ(c.at("/tf"), 498u);
   EXPECT_EQ(c.at("/tf_static"), 2u);
-  EXPECT_EQ(bag->message_count(), 1545u);  // metadata.yaml's message_count
+  EXPECT_EQ(bag->message_count(), 1545u);         // metadata.yaml's message_count
   EXPECT_NEAR(bag->duration_s(), 32.448, 0.001);  // metadata.yaml's duration
   // The .db3 file on its own reads the same.
   Result<RosBag> db3 = read_ros_bag(path / "obstacle-avoider_0.db3");
@@ -268,7 +271,8 @@ TEST(RosBagRealData, ScanMatcherDemoWithItsWrongIndexLengthsReads) {
   EXPECT_EQ(bag->topics[0].type, "sensor_msgs/LaserScan");
   EXPECT_EQ(bag->topics[0].message_count, 360u);
   EXPECT_NEAR(bag->topics[0].rate_hz(), 10.0, 0.1);
-  Result<LaserScanMessage> first = decode_laser_scan(bag->bytes(bag->messages.front()), RosEncoding::kRos1);
+  Result<LaserScanMessage> first =
+      decode_laser_scan(bag->bytes(bag->messages.front()), RosEncoding::kRos1);
   ASSERT_TRUE(first.ok()) << first.error().message;
   EXPECT_EQ(first->header.frame_id, "/laser");
   EXPECT_EQ(first->ranges_m.size(), 681u);
@@ -284,7 +288,8 @@ TEST(RosBagRealData, LegacyFormat12GivesAClearError) {
   Result<RosBag> bag = read_ros_bag(path);
   ASSERT_FALSE(bag.ok());
   EXPECT_EQ(bag.error().kind, ErrorKind::kInput);
-  EXPECT_THAT(bag.error().message, HasSubstr("laser_scan_sparsifier_demo_v1.2.bag: legacy ROS bag format 1.2"));
+  EXPECT_THAT(bag.error().message,
+              HasSubstr("laser_scan_sparsifier_demo_v1.2.bag: legacy ROS bag format 1.2"));
 }
 
 }  // namespace

@@ -29,7 +29,8 @@ class BothEncodings : public ::testing::TestWithParam<RosEncoding> {};
 
 TEST_P(BothEncodings, LaserScanRoundTripsEveryField) {
   const LaserScanMessage m = sample_scan();
-  Result<LaserScanMessage> r = decode_laser_scan(support::encode_laser_scan(m, GetParam()), GetParam());
+  Result<LaserScanMessage> r =
+      decode_laser_scan(support::encode_laser_scan(m, GetParam()), GetParam());
   ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_EQ(r->header.stamp_ns, m.header.stamp_ns);
   EXPECT_EQ(r->header.frame_id, "laser");

@@ -116,7 +116,8 @@ namespace bag_writer_detail {
 inline void put_u8(std::string& out, std::uint8_t v) { out.push_back(static_cast<char>(v)); }
 template <typename T>
 void put_le(std::string& out, T v) {
-  for (std::size_t i = 0; i < sizeof(T); ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+  for (std::size_t i = 0; i < sizeof(T); ++i)
+    out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
 }
 inline std::string bin_u32(std::uint32_t v) {
   std::string s;
@@ -183,13 +184,16 @@ inline std::string write_ros1_bag(const std::vector<TopicToWrite>& topics,
   using namespace bag_writer_detail;
   auto connection = [&](std::size_t i) {
     std::string data;
-    for (const auto& [k, v] : std::vector<std::pair<std::string, std::string>>{
-             {"topic", topics[i].name}, {"type", topics[i].type}, {"md5sum", "*"},
-             {"message_definition", ""}}) {
+    for (const auto& [k, v] :
+         std::vector<std::pair<std::string, std::string>>{{"topic", topics[i].name},
+                                                          {"type", topics[i].type},
+                                                          {"md5sum", "*"},
+                                                          {"message_definition", ""}}) {
       put_le(data, static_cast<std::uint32_t>(k.size() + 1 + v.size()));
       data += k + "=" + v;
     }
-    return ros1_record({{"op", "\x07"}, {"conn", bin_u32(static_cast<std::uint32_t>(i))},
+    return ros1_record({{"op", "\x07"},
+                        {"conn", bin_u32(static_cast<std::uint32_t>(i))},
                         {"topic", topics[i].name}},
                        data);
   };
@@ -207,44 +211,50 @@ inline std::string write_ros1_bag(const std::vector<TopicToWrite>& topics,
       if (!written[m.topic]) inner += connection(m.topic);
       written[m.topic] = true;
       index[m.topic].emplace_back(m.t_ns, static_cast<std::uint32_t>(inner.size()));
-      inner += ros1_record({{"op", "\x02"}, {"conn", bin_u32(static_cast<std::uint32_t>(m.topic))},
+      inner += ros1_record({{"op", "\x02"},
+                            {"conn", bin_u32(static_cast<std::uint32_t>(m.topic))},
                             {"time", bin_time(m.t_ns)}},
                            std::string(m.data.begin(), m.data.end()));
     }
     const std::size_t chunk_pos = header_end + body.size();
-    body += ros1_record({{"op", "\x05"}, {"compression", compression},
+    body += ros1_record({{"op", "\x05"},
+                         {"compression", compression},
                          {"size", bin_u32(static_cast<std::uint32_t>(inner.size()))}},
                         compress(compression, inner));
     std::string counts;
     for (const auto& [conn, entries] : index) {
       std::string data;
       for (const auto& [t, offset] : entries) data += bin_time(t) + bin_u32(offset);
-      body += ros1_record({{"op", "\x04"}, {"ver", bin_u32(1)},
+      body += ros1_record({{"op", "\x04"},
+                           {"ver", bin_u32(1)},
                            {"conn", bin_u32(static_cast<std::uint32_t>(conn))},
                            {"count", bin_u32(static_cast<std::uint32_t>(entries.size()))}},
                           data);
       counts += bin_u32(static_cast<std::uint32_t>(conn)) +
                 bin_u32(static_cast<std::uint32_t>(entries.size()));
     }
-    chunk_infos += ros1_record(
-        {{"op", "\x06"}, {"ver", bin_u32(1)}, {"chunk_pos", bin_u64(chunk_pos)},
-         {"start_time", bin_time(messages[first].t_ns)},
-         {"end_time", bin_time(messages[last - 1].t_ns)},
-         {"count", bin_u32(static_cast<std::uint32_t>(index.size()))}},
-        counts);
+    chunk_infos += ros1_record({{"op", "\x06"},
+                                {"ver", bin_u32(1)},
+                                {"chunk_pos", bin_u64(chunk_pos)},
+                                {"start_time", bin_time(messages[first].t_ns)},
+                                {"end_time", bin_time(messages[last - 1].t_ns)},
+                                {"count", bin_u32(static_cast<std::uint32_t>(index.size()))}},
+                               counts);
     ++chunk_count;
   }
   const std::size_t index_pos = header_end + body.size();
   for (std::size_t i = 0; i < topics.size(); ++i) body += connection(i);
   body += chunk_infos;
-  std::string header = ros1_record(
-      {{"op", "\x03"}, {"index_pos", bin_u64(index_pos)},
-       {"conn_count", bin_u32(static_cast<std::uint32_t>(topics.size()))},
-       {"chunk_count", bin_u32(chunk_count)}},
-      "");
+  std::string header =
+      ros1_record({{"op", "\x03"},
+                   {"index_pos", bin_u64(index_pos)},
+                   {"conn_count", bin_u32(static_cast<std::uint32_t>(topics.size()))},
+                   {"chunk_count", bin_u32(chunk_count)}},
+                  "");
   // Pad the bag header record's data with spaces to 4096 bytes in all.
   const std::size_t pad = 4096 - header.size();
-  header = ros1_record({{"op", "\x03"}, {"index_pos", bin_u64(index_pos)},
+  header = ros1_record({{"op", "\x03"},
+                        {"index_pos", bin_u64(index_pos)},
                         {"conn_count", bin_u32(static_cast<std::uint32_t>(topics.size()))},
                         {"chunk_count", bin_u32(chunk_count)}},
                        std::string(pad, ' '));
@@ -259,7 +269,9 @@ inline std::string write_mcap(const std::vector<TopicToWrite>& topics,
                               const std::string& compression, const std::string& encoding = "cdr",
                               std::size_t per_chunk = 50) {
   using namespace bag_writer_detail;
-  auto string = [](const std::string& s) { return bin_u32(static_cast<std::uint32_t>(s.size())) + s; };
+  auto string = [](const std::string& s) {
+    return bin_u32(static_cast<std::uint32_t>(s.size())) + s;
+  };
   auto record = [](std::uint8_t op, const std::string& content) {
     std::string out;
     put_u8(out, op);

@@ -49,8 +49,9 @@ inline SyntheticRun synthetic_run(RosEncoding encoding, std::size_t scans, std::
   if (with_tf) {
     TfMessage statics;
     statics.transforms.push_back({{ns(0), "base_footprint"}, "base_link", {}});
-    statics.transforms.push_back(
-        {{ns(0), "base_link"}, "base_laser_link", {kSyntheticLaserX, 0.0, 0.2, 0.0, 0.0, 1.0, 0.0}});
+    statics.transforms.push_back({{ns(0), "base_link"},
+                                  "base_laser_link",
+                                  {kSyntheticLaserX, 0.0, 0.2, 0.0, 0.0, 1.0, 0.0}});
     run.messages.push_back({3, ns(0), encode_tf_message(statics, encoding)});
   }
   for (std::size_t k = 0; k < scans; ++k) {
@@ -67,8 +68,10 @@ inline SyntheticRun synthetic_run(RosEncoding encoding, std::size_t scans, std::
     LaserScanMessage scan;
     scan.header = {ns(0.1 * static_cast<double>(k) + 0.025), "base_laser_link"};
     scan.angle_min_rad = -static_cast<float>(std::numbers::pi);
-    scan.angle_increment_rad = static_cast<float>(2 * std::numbers::pi / static_cast<double>(beams));
-    scan.angle_max_rad = scan.angle_min_rad + scan.angle_increment_rad * static_cast<float>(beams - 1);
+    scan.angle_increment_rad =
+        static_cast<float>(2 * std::numbers::pi / static_cast<double>(beams));
+    scan.angle_max_rad =
+        scan.angle_min_rad + scan.angle_increment_rad * static_cast<float>(beams - 1);
     scan.range_min_m = 0.02F;
     scan.range_max_m = 5.0F;
     for (std::size_t b = 0; b < beams; ++b) scan.ranges_m.push_back(synthetic_range(k, b));

@@ -36,12 +36,12 @@ struct RobotBagOptions {
 /// A LaserLog and what it was made from.
 struct RobotBag {
   LaserLog log;
-  std::string format;       // RosBag::format
-  std::string scan_topic;   // the topics and frames chosen
+  std::string format;      // RosBag::format
+  std::string scan_topic;  // the topics and frames chosen
   std::string odom_topic;
-  std::string odom_frame;   // the odometry's header.frame_id
+  std::string odom_frame;  // the odometry's header.frame_id
   std::string base_frame;
-  std::string laser_frame;  // the scans' header.frame_id (the first scan's)
+  std::string laser_frame;     // the scans' header.frame_id (the first scan's)
   int no_return_readings = 0;  // readings mapped to no-return
 };
 

@@ -119,6 +119,19 @@ TEST(RosBag, UnknownChunkCompressionIsNamed) {
   EXPECT_THAT(bag.error().message, HasSubstr("compression 'zip' is unknown"));
 }
 
+TEST(RosBag, ChunkClaimingGigabytesIsRefusedWithoutAllocatingThem) {
+  TempDir dir;
+  const auto run = support::synthetic_run(RosEncoding::kRos1, 3, 10);
+  std::string bytes = support::write_ros1_bag(run.topics, run.messages, "lz4");
+  const std::size_t at = bytes.find("size=") + 5;  // the chunk's uncompressed size, u32
+  bytes.replace(at, 4, std::string("\xF0\xFF\xFF\xFF", 4));
+  support::write_bytes(dir / "huge.bag", bytes);
+  Result<RosBag> bag = read_ros_bag(dir / "huge.bag");
+  ASSERT_FALSE(bag.ok());
+  EXPECT_THAT(bag.error().message, HasSubstr("huge.bag: byte "));
+  EXPECT_THAT(bag.error().message, HasSubstr("4294967280 bytes uncompressed, more than the"));
+}
+
 TEST(RosBag, ChunkThatDoesNotDecompressToItsSizeIsRefused) {
   TempDir dir;
   const auto run = support::synthetic_run(RosEncoding::kRos1, 3, 10);

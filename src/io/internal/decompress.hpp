@@ -11,8 +11,9 @@
 
 namespace tessera::io_internal {
 
-/// The largest chunk a reader decompresses: a bag that claims more is refused, not allocated.
-inline constexpr std::uint64_t kMaxChunkBytes = std::uint64_t{1} << 30;
+/// The largest chunk a reader decompresses (256 MiB): a bag that claims more is refused, not
+/// allocated. rosbag's chunks are 768 KiB by default and MCAP writers' a few MiB.
+inline constexpr std::uint64_t kMaxChunkBytes = std::uint64_t{1} << 28;
 
 /// Decompresses `in` into `out` (resized to `size`). `method` is "bz2" (bzip2 stream), "lz4" (LZ4
 /// frame format, as roslz4 and MCAP write it) or "zstd" (Zstandard frames). Returns an empty

@@ -7,6 +7,8 @@ packages=(
   build-essential cmake make pkg-config python3
   libeigen3-dev libceres-dev libopencv-dev libnanoflann-dev libcli11-dev libfmt-dev
   nlohmann-json3-dev libyaml-cpp-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # ROS bag input (io/ros*): bz2 and lz4 chunks of ROS 1 bags, zstd/lz4 MCAP chunks, rosbag2 sqlite3.
+  libbz2-dev liblz4-dev libzstd-dev libsqlite3-dev
   gcc-arm-none-eabi libnewlib-arm-none-eabi
   # The C++ headers for arm-none-eabi (<cstddef>, <cstdint>, ...): only a Recommends of
   # gcc-arm-none-eabi, so --no-install-recommends leaves them out and make bob-firmware fails.

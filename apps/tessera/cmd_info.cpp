@@ -1,21 +1,76 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "tessera/io/map_file.hpp"
+#include "tessera/io/ros_bag.hpp"
 
 namespace tessera::cli {
 
 InfoCommand::InfoCommand(CLI::App& app) {
-  sub_ = app.add_subcommand("info", "Describe a map file: format, size, resolution, cell counts");
-  sub_->add_option("file", file_, "Map file (any format tessera reads)")->required();
+  sub_ = app.add_subcommand("info",
+                            "Describe a map file (format, size, resolution, cell counts) or a ROS "
+                            "bag (topics, types, message counts, rates, duration)");
+  sub_->add_option("file", file_,
+                   "Map file (any format tessera reads) or ROS bag (.bag, .db3, .mcap or a "
+                   "rosbag2 folder)")
+      ->required();
   sub_->add_option("--map-resolution-m", map_resolution_m_,
                    "Cell size for map files that carry none (images, Moving AI)");
   sub_->add_flag("--json", json_, "Print JSON instead of text");
 }
 
+/// Like `ros2 bag info`: the storage, the span, and per topic its type, count and rate.
+int InfoCommand::run_bag() const {
+  Result<RosBag> read = read_ros_bag(file_);
+  if (!read) return report_error(read.error());
+  const RosBag& bag = *read;
+  nlohmann::json topics = nlohmann::json::array();
+  for (const BagTopic& t : bag.topics) {
+    topics.push_back({{"name", t.name},
+                      {"type", t.type},
+                      {"serialization", t.serialization},
+                      {"message_count", t.message_count},
+                      {"rate_hz", t.rate_hz()},
+                      {"first_s", 1e-9 * static_cast<double>(t.first_ns)},
+                      {"last_s", 1e-9 * static_cast<double>(t.last_ns)}});
+  }
+  nlohmann::json files = nlohmann::json::array();
+  for (const auto& f : bag.files) files.push_back(f.string());
+  const nlohmann::json j = {{"file", file_.string()},
+                            {"format", bag.format},
+                            {"files", files},
+                            {"message_count", bag.message_count()},
+                            {"start_s", 1e-9 * static_cast<double>(bag.start_ns())},
+                            {"end_s", 1e-9 * static_cast<double>(bag.end_ns())},
+                            {"duration_s", bag.duration_s()},
+                            {"topics", topics}};
+  if (json_) {
+    fmt::print("{}\n", j.dump(2));
+    return kExitOk;
+  }
+  fmt::print("{}: {}\n", file_.string(), bag.format);
+  fmt::print("  duration    {:.3f} s (start {:.3f} s, end {:.3f} s)\n", bag.duration_s(),
+             1e-9 * static_cast<double>(bag.start_ns()), 1e-9 * static_cast<double>(bag.end_ns()));
+  fmt::print("  messages    {} on {} topics\n", bag.message_count(), bag.topics.size());
+  std::size_t name_w = 5, type_w = 4;
+  for (const BagTopic& t : bag.topics) {
+    name_w = std::max(name_w, t.name.size());
+    type_w = std::max(type_w, t.type.size());
+  }
+  fmt::print("  {:<{}}  {:<{}}  {:>8}  {:>8}  {}\n", "topic", name_w, "type", type_w, "count",
+             "rate_hz", "serialization");
+  for (const BagTopic& t : bag.topics) {
+    fmt::print("  {:<{}}  {:<{}}  {:>8}  {:>8.2f}  {}\n", t.name, name_w, t.type, type_w,
+               t.message_count, t.rate_hz(), t.serialization);
+  }
+  return kExitOk;
+}
+
 int InfoCommand::run() const {
+  if (is_ros_bag_path(file_)) return run_bag();
   MapLoadOptions load_options;
   load_options.resolution_m = map_resolution_m_;
   Result<LoadedMap> loaded = load_map(file_, load_options);

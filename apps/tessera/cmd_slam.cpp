@@ -24,6 +24,7 @@
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/relations_file.hpp"
 #include "tessera/io/render.hpp"
+#include "tessera/io/robot_bag.hpp"
 #include "tessera/io/tum_trajectory.hpp"
 #include "tessera/sim/laser_run.hpp"
 #include "tessera/slam/laser_slam.hpp"
@@ -93,6 +94,15 @@ SlamCommand::SlamCommand(CLI::App& app) {
       "its ground truth; writes map.yaml + map.pgm, map.png, trajectory.txt (one pose per scan), "
       "graph.g2o and report.json to --out");
   sub_->add_option("--log", log_, "Laser log: CARMEN .clf/.log (FLASER, ROBOTLASER1, RAWLASER1)");
+  sub_->add_option("--bag", bag_,
+                   "ROS bag: a ROS 1 .bag, a rosbag2 folder, a .db3 or an .mcap file (LaserScan, "
+                   "Odometry, the laser pose from /tf_static and /tf)");
+  sub_->add_option("--scan-topic", scan_topic_,
+                   "--bag: the sensor_msgs/LaserScan topic (needed when there are several)");
+  sub_->add_option("--odom-topic", odom_topic_,
+                   "--bag: the nav_msgs/Odometry topic (needed when there are several)");
+  sub_->add_option("--base-frame", base_frame_,
+                   "--bag: the robot frame (default: the odometry's child_frame_id)");
   add_world_options(*sub_, world_);
   sub_->add_option("--seed", seed_, "Simulated run: seed of the start, odometry and range noise")
       ->capture_default_str();
@@ -122,8 +132,14 @@ int SlamCommand::run() const {
     return report_error(usage_error("--time-offset must be a finite number of seconds"));
   }
   if (log_ && world_.file) return report_error(usage_error("give --log or --world, not both"));
-  if (!log_ && relations_) {
-    return report_error(usage_error("--relations scores a log: it needs --log"));
+  if (bag_ && (log_ || world_.file)) {
+    return report_error(usage_error("give --bag alone, not with --log or --world"));
+  }
+  if (!bag_ && (!scan_topic_.empty() || !odom_topic_.empty() || !base_frame_.empty())) {
+    return report_error(usage_error("--scan-topic, --odom-topic and --base-frame need --bag"));
+  }
+  if (!log_ && !bag_ && relations_) {
+    return report_error(usage_error("--relations scores a log: it needs --log or --bag"));
   }
   slam::LaserSlamOptions options;
   options.loop_closure = !no_loop_closure_;
@@ -132,10 +148,24 @@ int SlamCommand::run() const {
   std::optional<LaserLog> read_log;
   std::optional<World> world;
   std::optional<SimulatedLaserRun> simulated;
+  nlohmann::json bag_report;  // --bag: the topics and frames read
   if (log_) {
     Result<LaserLog> read = read_carmen_log(*log_);
     if (!read) return report_error(read.error());
     read_log = std::move(read).value();
+  } else if (bag_) {
+    Result<RobotBag> read = read_robot_bag(*bag_, {scan_topic_, odom_topic_, base_frame_});
+    if (!read) return report_error(read.error());
+    const Pose2& laser = read->log.scans.front().laser_in_robot;
+    bag_report = {{"format", read->format},
+                  {"scan_topic", read->scan_topic},
+                  {"odom_topic", read->odom_topic},
+                  {"odom_frame", read->odom_frame},
+                  {"base_frame", read->base_frame},
+                  {"laser_frame", read->laser_frame},
+                  {"laser_in_robot_m_rad", {laser.x, laser.y, laser.theta}},
+                  {"no_return_readings", read->no_return_readings}};
+    read_log = std::move(read->log);
   } else {
     Result<World> loaded = load_world(world_, 0.05);
     if (!loaded) return report_error(loaded.error());
@@ -158,7 +188,7 @@ int SlamCommand::run() const {
   const LaserLog& log = simulated ? simulated->log : *read_log;
   options.map_resolution_m = cell_m_ ? *cell_m_ : world ? world->geometry().resolution_m() : 0.05;
   if (auto problem = slam::validate(options)) return report_error(usage_error(*problem));
-  const std::string input_name = log_ ? log_->string() : world->name();
+  const std::string input_name = log_ ? log_->string() : bag_ ? bag_->string() : world->name();
   std::optional<std::vector<Relation>> relations;
   if (relations_) {
     Result<std::vector<Relation>> read = read_relations(*relations_);
@@ -200,7 +230,7 @@ int SlamCommand::run() const {
                            {"command", "slam"},
                            {"seed", simulated ? nlohmann::json(seed_) : nlohmann::json(nullptr)},
                            {"options",
-                            {{log_ ? "log" : "world", input_name},
+                            {{log_ ? "log" : bag_ ? "bag" : "world", input_name},
                              {"loop_closure", options.loop_closure},
                              {"map_resolution_m", options.map_resolution_m},
                              {"submap_resolution_m", options.submaps.resolution_m},
@@ -231,6 +261,7 @@ int SlamCommand::run() const {
                              {"data_duration_s", duration_s},
                              {"realtime_factor", wall_s > 0.0 ? duration_s / wall_s : 0.0}}}};
   if (relations_) report["options"]["relations"] = relations_->string();
+  if (bag_) report["bag"] = bag_report;
   std::optional<SimulationScore> score;
   if (simulated) {
     Result<SimulationScore> scored = score_simulation(*simulated, *world, r);

@@ -60,13 +60,15 @@ class RenderCommand : public Command {
   int pixels_per_cell_ = 0;
 };
 
-/// tessera info: describes a map file.
+/// tessera info: describes a map file, or a ROS bag (topics, types, counts, rates, duration).
 class InfoCommand : public Command {
  public:
   explicit InfoCommand(CLI::App& app);
   [[nodiscard]] int run() const;
 
  private:
+  [[nodiscard]] int run_bag() const;
+
   std::filesystem::path file_;
   std::optional<double> map_resolution_m_;
   bool json_ = false;
@@ -148,6 +150,10 @@ class SlamCommand : public Command {
 
  private:
   std::optional<std::filesystem::path> log_;  // empty: a simulated run in world_
+  std::optional<std::filesystem::path> bag_;  // a ROS bag instead of a CARMEN log
+  std::string scan_topic_;                    // --bag: empty chooses by type
+  std::string odom_topic_;
+  std::string base_frame_;  // --bag: empty is the odometry's child frame
   WorldSource world_;
   std::uint64_t seed_ = 1;
   double duration_s_ = 300.0;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "internal/file_util.hpp"
+#include "internal/pose_interpolation.hpp"
 #include "internal/text_fields.hpp"
 
 namespace tessera {
@@ -260,10 +261,7 @@ Pose2 odometry_at(double t_s, const OdometryReading* a, const OdometryReading* b
   if (a == nullptr) return b->pose;
   if (b == nullptr) return a->pose;
   if (a->t_s < b->t_s && a->t_s <= t_s && t_s <= b->t_s) {
-    const double f = (t_s - a->t_s) / (b->t_s - a->t_s);
-    const double dtheta = normalize_angle(b->pose.theta - a->pose.theta);
-    return {a->pose.x + f * (b->pose.x - a->pose.x), a->pose.y + f * (b->pose.y - a->pose.y),
-            normalize_angle(a->pose.theta + f * dtheta)};
+    return io_internal::interpolate_pose(a->pose, b->pose, (t_s - a->t_s) / (b->t_s - a->t_s));
   }
   return std::abs(t_s - a->t_s) <= std::abs(t_s - b->t_s) ? a->pose : b->pose;
 }

@@ -23,6 +23,8 @@ Result<std::string> read_file_bytes(const std::filesystem::path& path) {
     return input_error(path.string() + ": cannot read: " + std::strerror(errno));
   }
   std::string bytes;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec) bytes.reserve(static_cast<std::size_t>(size));  // one allocation for the whole file
   char buffer[1 << 16];
   std::size_t n = 0;
   while ((n = std::fread(buffer, 1, sizeof(buffer), f)) > 0) bytes.append(buffer, n);

@@ -1,0 +1,234 @@
+// Bag -> LaserLog: topic choice, tf tree, odometry interpolation and the no-return rule of
+// robot_bag.hpp.
+#include "tessera/io/robot_bag.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "internal/pose_interpolation.hpp"
+#include "internal/time_ns.hpp"
+#include "tessera/io/ros_messages.hpp"
+#include "tessera/io/tf_tree.hpp"
+
+namespace tessera {
+namespace {
+
+bool is_tf_topic(std::string_view name, bool& is_static) {
+  name = tf_frame_name(name);  // "/tf" and "tf" alike
+  is_static = name == "tf_static";
+  return name == "tf" || name == "tf_static";
+}
+
+std::string join_names(const std::vector<const BagTopic*>& topics) {
+  std::string out;
+  for (const BagTopic* t : topics) out += (out.empty() ? "" : ", ") + t->name;
+  return out;
+}
+
+/// The topic `wanted` names, or the only topic of `type`.
+Result<std::size_t> choose_topic(const RosBag& bag, const std::string& file, std::string_view type,
+                                 const std::string& wanted, std::string_view option) {
+  std::vector<const BagTopic*> candidates;
+  for (const BagTopic& t : bag.topics) {
+    if (ros_type_is(t.type, type)) candidates.push_back(&t);
+  }
+  if (!wanted.empty()) {
+    for (std::size_t i = 0; i < bag.topics.size(); ++i) {
+      const BagTopic& t = bag.topics[i];
+      if (t.name != wanted) continue;
+      if (!ros_type_is(t.type, type)) {
+        return usage_error(file + ": " + std::string(option) + " " + wanted + " is a " + t.type +
+                           " topic, expected " + std::string(type));
+      }
+      return i;
+    }
+    return usage_error(file + ": " + std::string(option) + " " + wanted + ": no such topic; " +
+                       std::string(type) +
+                       " topics: " + (candidates.empty() ? "none" : join_names(candidates)));
+  }
+  if (candidates.empty()) {
+    return input_error(file + ": no " + std::string(type) + " topic in the bag" +
+                       (type == kOdometryType ? " (SLAM on a bag needs odometry)" : ""));
+  }
+  if (candidates.size() > 1) {
+    return usage_error(file + ": " + std::to_string(candidates.size()) + " " + std::string(type) +
+                       " topics (" + join_names(candidates) + "): choose one with " +
+                       std::string(option));
+  }
+  return static_cast<std::size_t>(candidates.front() - bag.topics.data());
+}
+
+RosEncoding encoding_of(const BagTopic& t, bool& known) {
+  known = t.serialization == "ros1" || t.serialization == "cdr";
+  return t.serialization == "ros1" ? RosEncoding::kRos1 : RosEncoding::kCdr;
+}
+
+/// Where a message is, for errors: "<file>: /scan message 12".
+std::string at(const std::string& file, const BagTopic& t, std::size_t n) {
+  return file + ": " + t.name + " message " + std::to_string(n);
+}
+
+double seconds(std::int64_t ns) { return 1e-9 * static_cast<double>(ns); }
+
+struct Odom {
+  std::int64_t t_ns = 0;
+  Pose2 T_odom_child;
+};
+
+/// Odometry at t_ns between the readings around it (CARMEN's RAWLASER1 rule, carmen_log.hpp).
+Pose2 odometry_at(const std::vector<Odom>& odom, std::int64_t t_ns) {
+  const auto after = std::lower_bound(odom.begin(), odom.end(), t_ns,
+                                      [](const Odom& o, std::int64_t v) { return o.t_ns < v; });
+  if (after == odom.begin()) return after->T_odom_child;
+  if (after == odom.end()) return odom.back().T_odom_child;
+  const Odom& a = *(after - 1);
+  const Odom& b = *after;
+  if (b.t_ns == a.t_ns) return b.T_odom_child;
+  const double f =
+      io_internal::ns_difference(t_ns, a.t_ns) / io_internal::ns_difference(b.t_ns, a.t_ns);
+  return io_internal::interpolate_pose(a.T_odom_child, b.T_odom_child, f);
+}
+
+}  // namespace
+
+bool robot_bag_needs(const BagTopic& topic) {
+  bool is_static = false;
+  return ros_type_is(topic.type, kLaserScanType) || ros_type_is(topic.type, kOdometryType) ||
+         (ros_type_is(topic.type, kTfMessageType) && is_tf_topic(topic.name, is_static));
+}
+
+Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
+                                const RobotBagOptions& options) {
+  // A bag without scans is bad input whatever the options say.
+  if (std::none_of(bag.topics.begin(), bag.topics.end(),
+                   [](const BagTopic& t) { return ros_type_is(t.type, kLaserScanType); })) {
+    return input_error(file + ": no " + std::string(kLaserScanType) + " topic in the bag");
+  }
+  Result<std::size_t> scan_topic =
+      choose_topic(bag, file, kLaserScanType, options.scan_topic, "--scan-topic");
+  if (!scan_topic) return scan_topic.error();
+  Result<std::size_t> odom_topic =
+      choose_topic(bag, file, kOdometryType, options.odom_topic, "--odom-topic");
+  if (!odom_topic) return odom_topic.error();
+
+  RobotBag out;
+  out.format = bag.format;
+  const BagTopic& scans_t = bag.topics[*scan_topic];
+  const BagTopic& odom_t = bag.topics[*odom_topic];
+  out.scan_topic = scans_t.name;
+  out.odom_topic = odom_t.name;
+  for (const BagTopic* t : {&scans_t, &odom_t}) {
+    bool known = false;
+    (void)encoding_of(*t, known);
+    if (!known) {
+      return input_error(file + ": topic " + t->name + " has serialization '" + t->serialization +
+                         "', expected ros1 or cdr");
+    }
+  }
+
+  // One pass: tf into the tree, odometry and scans decoded in storage order.
+  TfTree tf;
+  std::vector<Odom> odom;
+  std::vector<std::pair<std::int64_t, LaserScanMessage>> scans;  // with log time
+  std::vector<std::size_t> seen(bag.topics.size(), 0);
+  std::string child_frame;
+  for (const BagMessage& m : bag.messages) {
+    const BagTopic& t = bag.topics[m.topic];
+    const std::size_t n = seen[m.topic]++;
+    bool known = false;
+    const RosEncoding encoding = encoding_of(t, known);
+    bool is_static = false;
+    if (m.topic == *scan_topic) {
+      Result<LaserScanMessage> s = decode_laser_scan(bag.bytes(m), encoding);
+      if (!s) return input_error(at(file, t, n) + ": " + s.error().message);
+      scans.emplace_back(m.log_time_ns, std::move(s).value());
+    } else if (m.topic == *odom_topic) {
+      Result<OdometryMessage> o = decode_odometry(bag.bytes(m), encoding);
+      if (!o) return input_error(at(file, t, n) + ": " + o.error().message);
+      if (odom.empty()) {
+        out.odom_frame = std::string(tf_frame_name(o->header.frame_id));
+        child_frame = std::string(tf_frame_name(o->child_frame_id));
+      }
+      const std::int64_t stamp = o->header.stamp_ns != 0 ? o->header.stamp_ns : m.log_time_ns;
+      odom.push_back({stamp, planar_pose(o->pose)});
+    } else if (known && ros_type_is(t.type, kTfMessageType) && is_tf_topic(t.name, is_static)) {
+      Result<TfMessage> tfm = decode_tf_message(bag.bytes(m), encoding);
+      if (!tfm) return input_error(at(file, t, n) + ": " + tfm.error().message);
+      for (const TransformStampedMessage& ts : tfm->transforms) tf.add(ts, is_static);
+    }
+  }
+  if (scans.empty()) return input_error(file + ": topic " + scans_t.name + " has no messages");
+  if (odom.empty()) return input_error(file + ": topic " + odom_t.name + " has no messages");
+  std::stable_sort(odom.begin(), odom.end(),
+                   [](const Odom& a, const Odom& b) { return a.t_ns < b.t_ns; });
+  out.base_frame =
+      options.base_frame.empty() ? child_frame : std::string(tf_frame_name(options.base_frame));
+  out.laser_frame = std::string(tf_frame_name(scans.front().second.header.frame_id));
+
+  for (const Odom& o : odom) {
+    out.log.odometry.push_back({seconds(o.t_ns), o.T_odom_child});
+  }
+  const bool base_is_child = out.base_frame == child_frame;
+  out.log.scans.reserve(scans.size());
+  for (std::size_t i = 0; i < scans.size(); ++i) {
+    const auto& [log_time_ns, msg] = scans[i];
+    const std::int64_t stamp = msg.header.stamp_ns != 0 ? msg.header.stamp_ns : log_time_ns;
+    if (!std::isfinite(msg.angle_increment_rad) || msg.angle_increment_rad == 0.0F ||
+        !std::isfinite(msg.angle_min_rad) || !std::isfinite(msg.range_max_m) ||
+        !(msg.range_max_m > 0.0F)) {
+      return input_error(at(file, scans_t, i) +
+                         ": angle_increment must be finite and non-zero, angle_min finite and "
+                         "range_max > 0");
+    }
+    StampedScan s;
+    s.t_s = seconds(stamp);
+    Pose2 T_odom_base = odometry_at(odom, stamp);
+    if (!base_is_child) {
+      Result<RosTransform> T_child_base = tf.lookup(child_frame, out.base_frame, stamp);
+      if (!T_child_base) {
+        return input_error(file + ": base frame '" + out.base_frame +
+                           "': " + T_child_base.error().message + " (the odometry's child frame)");
+      }
+      T_odom_base = T_odom_base * planar_pose(*T_child_base);
+    }
+    s.odometry = T_odom_base;
+    const std::string_view laser = tf_frame_name(msg.header.frame_id);
+    if (laser != out.base_frame) {
+      Result<RosTransform> T_base_laser = tf.lookup(out.base_frame, laser, stamp);
+      if (!T_base_laser) {
+        std::string known;
+        for (const std::string& f : tf.frames()) known += (known.empty() ? "" : ", ") + f;
+        return input_error(at(file, scans_t, i) + ": laser pose: " + T_base_laser.error().message +
+                           " (tf frames: " + (known.empty() ? "none" : known) + ")");
+      }
+      s.laser_in_robot = planar_pose(*T_base_laser);
+    }
+    s.scan.angle_min_rad = msg.angle_min_rad;
+    s.scan.angle_increment_rad = msg.angle_increment_rad;
+    s.scan.min_range_m = std::isfinite(msg.range_min_m) ? std::max(0.0F, msg.range_min_m) : 0.0;
+    s.scan.max_range_m = msg.range_max_m;
+    s.scan.ranges_m.reserve(msg.ranges_m.size());
+    for (const float r : msg.ranges_m) {
+      const bool valid =
+          std::isfinite(r) && r > 0.0F && r >= msg.range_min_m && r <= msg.range_max_m;
+      if (!valid) ++out.no_return_readings;
+      s.scan.ranges_m.push_back(valid ? static_cast<double>(r) : s.scan.max_range_m);
+    }
+    out.log.scans.push_back(std::move(s));
+  }
+  for (std::size_t i = 1; i < out.log.scans.size(); ++i) {
+    if (out.log.scans[i].t_s < out.log.scans[i - 1].t_s) ++out.log.backward_stamps;
+  }
+  return out;
+}
+
+Result<RobotBag> read_robot_bag(const std::filesystem::path& path, const RobotBagOptions& options) {
+  BagReadOptions read;
+  read.keep = robot_bag_needs;
+  Result<RosBag> bag = read_ros_bag(path, read);
+  if (!bag) return bag.error();
+  return robot_bag_from(*bag, path.string(), options);
+}
+
+}  // namespace tessera

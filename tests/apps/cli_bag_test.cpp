@@ -1,0 +1,180 @@
+// tessera info BAG and tessera slam --bag end to end: the real bags' topics and counts, SLAM on
+// each real Neato bag, and each kind of bad bag (exit 3, one line naming the file, nothing
+// written).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_run.hpp"
+#include "support/data.hpp"
+#include "support/synthetic_bag.hpp"
+
+namespace tessera {
+namespace {
+
+using support::run_cli;
+using support::TempDir;
+using ::testing::HasSubstr;
+using ::testing::MatchesRegex;
+
+std::map<std::string, int> json_counts(const std::string& output) {
+  std::map<std::string, int> out;
+  const nlohmann::json j = nlohmann::json::parse(output);
+  for (const auto& t : j["topics"]) out[t["name"]] = t["message_count"];
+  return out;
+}
+
+TEST(CliBag, InfoListsTheRos2BagsTopicsAndCounts) {
+  const auto fsc = support::data_path("bags/ros2_neato_finite_state_controller");
+  const auto oa = support::data_path("bags/ros2_neato_obstacle_avoider");
+  TESSERA_REQUIRE_DATA(fsc);
+  TESSERA_REQUIRE_DATA(oa);
+  const support::CliRun text = run_cli("info " + fsc.string());
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_THAT(text.output, HasSubstr("rosbag2 (sqlite3)"));
+  EXPECT_THAT(text.output,
+              MatchesRegex("(.|\n)*/scan +sensor_msgs/msg/LaserScan +280 +4\\.43 +cdr(.|\n)*"));
+  EXPECT_THAT(text.output, HasSubstr("3127 on 9 topics"));
+  const support::CliRun json = run_cli("info --json " + oa.string());
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  EXPECT_EQ(json_counts(json.output), (std::map<std::string, int>{{"/scan", 153},
+                                                                  {"/odom", 166},
+                                                                  {"/tf", 498},
+                                                                  {"/tf_static", 2},
+                                                                  {"/cmd_vel", 88},
+                                                                  {"/stable_scan", 153},
+                                                                  {"/projected_stable_scan", 153},
+                                                                  {"/bump", 166},
+                                                                  {"/accel", 166}}));
+  EXPECT_NEAR(nlohmann::json::parse(json.output)["duration_s"].get<double>(), 32.448, 0.001);
+}
+
+TEST(CliBag, InfoListsTheRos1NeatoBag) {
+  const auto bag = support::data_path("bags/ros1_neato_drive_square_demo.bag");
+  TESSERA_REQUIRE_DATA(bag);
+  const support::CliRun json = run_cli("info " + bag.string() + " --json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  EXPECT_EQ(json_counts(json.output), (std::map<std::string, int>{{"/scan", 404},
+                                                                  {"/odom", 413},
+                                                                  {"/tf", 2177},
+                                                                  {"/tf_static", 1},
+                                                                  {"/stable_scan", 405},
+                                                                  {"/cmd_vel", 4360}}));
+  EXPECT_EQ(nlohmann::json::parse(json.output)["format"], "ROS 1 bag 2.0");
+}
+
+TEST(CliBag, InfoOnALegacyBagSaysItIsFormat12) {
+  const auto bag = support::data_path("bags/laser_scan_sparsifier_demo_v1.2.bag");
+  TESSERA_REQUIRE_DATA(bag);
+  const support::CliRun run = run_cli("info " + bag.string());
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_THAT(run.output,
+              HasSubstr("laser_scan_sparsifier_demo_v1.2.bag: legacy ROS bag format 1.2"));
+}
+
+/// tessera slam --bag on a real Neato bag: exit 0, every scan used, the bag section of the report.
+void expect_slam_runs(const std::string& relative, int scans, const std::string& base_frame) {
+  const auto bag = support::data_path(relative);
+  TESSERA_REQUIRE_DATA(bag);
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  const support::CliRun run =
+      run_cli("slam --bag " + bag.string() + " --scan-topic /scan --quiet --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  for (const char* f : {"map.yaml", "map.pgm", "map.png", "trajectory.txt", "report.json"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  }
+  const nlohmann::json report = nlohmann::json::parse(support::read_bytes(out / "report.json"));
+  EXPECT_EQ(report["slam"]["scans"], scans);
+  EXPECT_GT(report["slam"]["nodes"].get<int>(), 10);
+  EXPECT_EQ(report["options"]["bag"], bag.string());
+  EXPECT_EQ(report["bag"]["scan_topic"], "/scan");
+  EXPECT_EQ(report["bag"]["odom_topic"], "/odom");
+  EXPECT_EQ(report["bag"]["base_frame"], base_frame);
+  EXPECT_EQ(report["bag"]["laser_frame"], "base_laser_link");
+}
+
+TEST(CliBag, SlamRunsOnTheRos2FiniteStateControllerBag) {
+  expect_slam_runs("bags/ros2_neato_finite_state_controller", 280, "base_footprint");
+}
+TEST(CliBag, SlamRunsOnTheRos2ObstacleAvoiderBag) {
+  expect_slam_runs("bags/ros2_neato_obstacle_avoider", 153, "base_footprint");
+}
+TEST(CliBag, SlamRunsOnTheRos1DriveSquareBag) {
+  expect_slam_runs("bags/ros1_neato_drive_square_demo.bag", 404, "base_link");
+}
+
+TEST(CliBag, SeveralScanTopicsIsAUsageErrorNamingThem) {
+  const auto bag = support::data_path("bags/ros1_neato_drive_square_demo.bag");
+  TESSERA_REQUIRE_DATA(bag);
+  TempDir dir;
+  const support::CliRun run =
+      run_cli("slam --bag " + bag.string() + " --out " + (dir.path() / "out").string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("(/stable_scan, /scan): choose one with --scan-topic"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out"));
+}
+
+// ---- Bad input: exit 3, one line naming the file, no output folder ----
+
+void expect_bad_bag(const TempDir& dir, const std::filesystem::path& bag, const std::string& what) {
+  const auto out = dir.path() / "out";
+  const support::CliRun run = run_cli("slam --bag " + bag.string() + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("tessera: " + bag.string() + ": "));
+  EXPECT_THAT(run.output, HasSubstr(what));
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliBag, TruncatedBagIsBadInput) {
+  const auto real = support::data_path("bags/ros1_neato_drive_square_demo.bag");
+  TESSERA_REQUIRE_DATA(real);
+  TempDir dir;
+  const std::string bytes = support::read_bytes(real);
+  support::write_bytes(dir / "cut.bag", std::string_view(bytes).substr(0, bytes.size() / 2));
+  expect_bad_bag(dir, dir / "cut.bag", "lies outside the file");
+}
+
+TEST(CliBag, ChunkWithUnknownCompressionIsBadInput) {
+  TempDir dir;
+  const auto run = support::synthetic_run(RosEncoding::kRos1, 5, 20);
+  support::write_bytes(dir / "zip.bag", support::write_ros1_bag(run.topics, run.messages, "zip"));
+  expect_bad_bag(dir, dir / "zip.bag", "chunk compression 'zip' is unknown");
+}
+
+TEST(CliBag, MessageLengthRunningPastItsRecordIsBadInput) {
+  TempDir dir;
+  auto run = support::synthetic_run(RosEncoding::kRos1, 5, 20);
+  std::vector<std::uint8_t>& scan = run.messages.back().data;  // the last /scan message
+  const std::uint32_t huge = 100000;                           // ranges count at byte 4+8+4+15+28
+  std::memcpy(scan.data() + 4 + 8 + 4 + 15 + 28, &huge, 4);
+  support::write_bytes(dir / "long.bag", support::write_ros1_bag(run.topics, run.messages, "bz2"));
+  expect_bad_bag(dir, dir / "long.bag",
+                 "/scan message 4: sensor_msgs/LaserScan: byte 63: ranges of 100000 elements runs "
+                 "past the end");
+}
+
+TEST(CliBag, CdrStringWithoutTerminatorIsBadInput) {
+  TempDir dir;
+  auto run = support::synthetic_run(RosEncoding::kCdr, 5, 20);
+  std::vector<std::uint8_t>& scan = run.messages.back().data;
+  scan[4 + 8 + 4 + 15] = 'X';  // the NUL after "base_laser_link"
+  support::write_bytes(dir / "nul.mcap", support::write_mcap(run.topics, run.messages, "zstd"));
+  expect_bad_bag(dir, dir / "nul.mcap", "string of 16 bytes has no terminating NUL");
+}
+
+TEST(CliBag, BagWithoutLaserScanIsBadInput) {
+  TempDir dir;
+  const auto run = support::synthetic_run(RosEncoding::kRos1, 5, 20);
+  std::vector<support::MessageToWrite> odometry_only;
+  for (const auto& m : run.messages) {
+    if (m.topic == 1) odometry_only.push_back({0, m.t_ns, m.data});
+  }
+  support::write_bytes(dir / "odom.bag", support::write_ros1_bag({run.topics[1]}, odometry_only));
+  expect_bad_bag(dir, dir / "odom.bag", "no sensor_msgs/LaserScan topic");
+}
+
+}  // namespace
+}  // namespace tessera

@@ -1,0 +1,270 @@
+// Bag -> LaserLog: the laser pose from the tf chain, odometry interpolated at the scan stamps,
+// no-return readings, the topic choice rules; on synthetic bags and on the real Neato bags.
+#include "tessera/io/robot_bag.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+#include "support/data.hpp"
+#include "support/synthetic_bag.hpp"
+#include "support/temp_dir.hpp"
+#include "tessera/io/tf_tree.hpp"
+
+namespace tessera {
+namespace {
+
+using support::TempDir;
+using ::testing::HasSubstr;
+
+constexpr double kPi = std::numbers::pi;
+
+Result<RobotBag> convert(const support::SyntheticRun& run, RobotBagOptions options = {}) {
+  TempDir dir;
+  support::write_bytes(dir / "run.bag", support::write_ros1_bag(run.topics, run.messages, "lz4"));
+  return read_robot_bag(dir / "run.bag", options);
+}
+
+TEST(RobotBag, LaserPoseComesFromTheStaticTfChain) {
+  Result<RobotBag> r = convert(support::synthetic_run(RosEncoding::kRos1, 5, 36));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->base_frame, "base_footprint");
+  EXPECT_EQ(r->laser_frame, "base_laser_link");
+  for (const StampedScan& s : r->log.scans) {
+    EXPECT_NEAR(s.laser_in_robot.x, support::kSyntheticLaserX, 1e-12);
+    EXPECT_NEAR(s.laser_in_robot.y, 0.0, 1e-12);
+    EXPECT_NEAR(std::abs(s.laser_in_robot.theta), kPi, 1e-12);
+  }
+}
+
+TEST(RobotBag, OdometryIsInterpolatedAtEachScanStamp) {
+  Result<RobotBag> r = convert(support::synthetic_run(RosEncoding::kRos1, 8, 36));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_EQ(r->log.scans.size(), 8u);
+  EXPECT_EQ(r->log.odometry.size(), 16u);
+  for (std::size_t k = 0; k < 8; ++k) {
+    const double t = 0.1 * static_cast<double>(k) + 0.025;  // halfway between two odometry stamps
+    const StampedScan& s = r->log.scans[k];
+    EXPECT_NEAR(s.t_s, 1.7e9 + t, 1e-6);
+    EXPECT_NEAR(s.odometry.x, 0.5 * t, 1e-9) << k;
+    EXPECT_NEAR(s.odometry.theta, 0.2 * t, 1e-9) << k;
+  }
+}
+
+TEST(RobotBag, OutOfRangeReadingsBecomeNoReturns) {
+  Result<RobotBag> r = convert(support::synthetic_run(RosEncoding::kRos1, 2, 40));
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  const RangeScan& scan = r->log.scans[1].scan;
+  ASSERT_EQ(scan.ranges_m.size(), 40u);
+  EXPECT_EQ(scan.max_range_m, 5.0);
+  EXPECT_NEAR(scan.min_range_m, 0.02, 1e-7);
+  EXPECT_EQ(scan.ranges_m[0], 5.0);  // inf
+  EXPECT_NEAR(scan.ranges_m[1], support::synthetic_range(1, 1), 1e-6);
+  EXPECT_EQ(r->no_return_readings, 2 * 4);
+  EXPECT_NEAR(scan.angle_min_rad, -kPi, 1e-6);
+}
+
+TEST(RobotBag, DriverNoReadingConventionsAllBecomeNoReturns) {
+  auto run = support::synthetic_run(RosEncoding::kCdr, 1, 10, /*with_tf=*/false);
+  LaserScanMessage scan;
+  scan.header = {support::kSyntheticStartNs, "base_footprint"};
+  scan.angle_increment_rad = 0.1F;
+  scan.range_min_m = 0.1F;
+  scan.range_max_m = 4.0F;
+  scan.ranges_m = {0.0F,  std::nanf(""), std::numeric_limits<float>::infinity(), 0.05F, 4.5F,
+                   -1.0F, 2.0F};
+  run.messages.back() = {0, scan.header.stamp_ns,
+                         support::encode_laser_scan(scan, RosEncoding::kCdr)};
+  TempDir dir;
+  support::write_bytes(dir / "r.mcap", support::write_mcap(run.topics, run.messages, ""));
+  Result<RobotBag> r = read_robot_bag(dir / "r.mcap");
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->log.scans[0].scan.ranges_m,
+            (std::vector<double>{4.0, 4.0, 4.0, 4.0, 4.0, 4.0, 2.0}));
+  // The scan is in the base frame itself: no tf needed, identity laser pose.
+  EXPECT_EQ(r->log.scans[0].laser_in_robot.x, 0.0);
+  EXPECT_EQ(r->log.scans[0].laser_in_robot.theta, 0.0);
+}
+
+TEST(RobotBag, McapWithRos1MessagesConvertsLikeTheRos1Bag) {
+  const auto run = support::synthetic_run(RosEncoding::kRos1, 6, 36);
+  TempDir dir;
+  support::write_bytes(dir / "r.mcap",
+                       support::write_mcap(run.topics, run.messages, "lz4", "ros1"));
+  Result<RobotBag> from_mcap = read_robot_bag(dir / "r.mcap");
+  Result<RobotBag> from_bag = convert(run);
+  ASSERT_TRUE(from_mcap.ok()) << from_mcap.error().message;
+  ASSERT_TRUE(from_bag.ok()) << from_bag.error().message;
+  ASSERT_EQ(from_mcap->log.scans.size(), from_bag->log.scans.size());
+  for (std::size_t i = 0; i < from_bag->log.scans.size(); ++i) {
+    EXPECT_EQ(from_mcap->log.scans[i].t_s, from_bag->log.scans[i].t_s);
+    EXPECT_EQ(from_mcap->log.scans[i].scan.ranges_m, from_bag->log.scans[i].scan.ranges_m);
+    EXPECT_EQ(from_mcap->log.scans[i].odometry.x, from_bag->log.scans[i].odometry.x);
+  }
+}
+
+TEST(RobotBag, BaseFrameOptionMovesOdometryAndLaserPoseToThatFrame) {
+  RobotBagOptions options;
+  options.base_frame = "base_link";  // identical to base_footprint in the synthetic tf
+  Result<RobotBag> r = convert(support::synthetic_run(RosEncoding::kRos1, 3, 36), options);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->base_frame, "base_link");
+  EXPECT_NEAR(r->log.scans[2].laser_in_robot.x, support::kSyntheticLaserX, 1e-12);
+  EXPECT_NEAR(r->log.scans[2].odometry.x, 0.5 * 0.225, 1e-9);
+}
+
+TEST(RobotBag, LaserFrameWithoutTfChainIsAnInputError) {
+  auto run = support::synthetic_run(RosEncoding::kRos1, 3, 36, /*with_tf=*/false);
+  Result<RobotBag> r = convert(run);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::kInput);
+  EXPECT_THAT(r.error().message, HasSubstr("run.bag: /scan message 0: laser pose: no tf chain"));
+}
+
+TEST(RobotBag, SeveralScanTopicsNeedAChoiceNamingThem) {
+  auto run = support::synthetic_run(RosEncoding::kRos1, 3, 36);
+  run.topics.push_back({"/stable_scan", "sensor_msgs/LaserScan"});
+  run.messages.push_back({4, run.messages.back().t_ns, run.messages.back().data});
+  Result<RobotBag> r = convert(run);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::kUsage);
+  EXPECT_THAT(r.error().message, HasSubstr("(/scan, /stable_scan): choose one with --scan-topic"));
+  RobotBagOptions options;
+  options.scan_topic = "/stable_scan";
+  Result<RobotBag> chosen = convert(run, options);
+  ASSERT_TRUE(chosen.ok()) << chosen.error().message;
+  EXPECT_EQ(chosen->log.scans.size(), 1u);
+  options.scan_topic = "/odom";
+  Result<RobotBag> wrong = convert(run, options);
+  ASSERT_FALSE(wrong.ok());
+  EXPECT_THAT(wrong.error().message, HasSubstr("/odom is a nav_msgs/Odometry topic"));
+}
+
+TEST(RobotBag, BagWithoutLaserScanIsAnInputError) {
+  auto run = support::synthetic_run(RosEncoding::kRos1, 3, 36);
+  run.topics.erase(run.topics.begin());  // no /scan topic: shift the others down
+  std::vector<support::MessageToWrite> kept;
+  for (auto& m : run.messages) {
+    if (m.topic == 0) continue;
+    kept.push_back({m.topic - 1, m.t_ns, m.data});
+  }
+  run.messages = kept;
+  Result<RobotBag> r = convert(run);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error().kind, ErrorKind::kInput);
+  EXPECT_THAT(r.error().message, HasSubstr("run.bag: no sensor_msgs/LaserScan topic"));
+}
+
+TEST(TfTree, DynamicEdgesInterpolateAndStaticOnesWinOverOlderStatics) {
+  TfTree tf;
+  tf.add({{0, "/odom"}, "base", {0, 0, 0, 0, 0, 0, 1}}, false);
+  tf.add({{10, "odom"}, "base", {1, 0, 0, 0, 0, 0, 1}}, false);
+  tf.add({{0, "base"}, "laser", {5, 0, 0, 0, 0, 0, 1}}, true);
+  tf.add({{0, "base"}, "laser", {0.5, 0, 0, 0, 0, 1, 0}}, true);  // a later static replaces it
+  Result<RosTransform> T = tf.lookup("odom", "laser", 5);
+  ASSERT_TRUE(T.ok()) << T.error().message;
+  const Pose2 p = planar_pose(*T);
+  EXPECT_NEAR(p.x, 1.0, 1e-12);  // 0.5 (interpolated) + 0.5
+  EXPECT_NEAR(std::abs(p.theta), kPi, 1e-12);
+  // And the other way round: T_laser_odom is the inverse.
+  const Pose2 q = planar_pose(*tf.lookup("laser", "odom", 5));
+  EXPECT_NEAR(q.x, 1.0, 1e-12);
+  EXPECT_FALSE(tf.lookup("odom", "camera", 5).ok());
+}
+
+// ---- The real Neato bags ----
+
+/// T_base_laser composed by hand from the last /tf_static value of each edge of the chain.
+Pose2 static_chain(const std::filesystem::path& path, const std::vector<std::string>& chain) {
+  BagReadOptions keep;
+  keep.keep = [](const BagTopic& t) { return t.name == "/tf_static"; };
+  Result<RosBag> bag = read_ros_bag(path, keep);
+  EXPECT_TRUE(bag.ok());
+  std::map<std::string, RosTransform> last;  // child -> T_parent_child
+  for (const BagMessage& m : bag->messages) {
+    const RosEncoding e =
+        bag->topics[m.topic].serialization == "cdr" ? RosEncoding::kCdr : RosEncoding::kRos1;
+    Result<TfMessage> tf = decode_tf_message(bag->bytes(m), e);
+    if (!tf.ok()) {
+      ADD_FAILURE() << tf.error().message;
+      continue;
+    }
+    for (const auto& t : tf->transforms) last[t.child_frame_id] = t.transform;
+  }
+  Pose2 T;
+  for (std::size_t i = 1; i < chain.size(); ++i) T = T * planar_pose(last.at(chain[i]));
+  return T;
+}
+
+void expect_neato_bag(const std::filesystem::path& path, std::size_t scans, std::size_t odometry,
+                      float no_reading, const std::vector<std::string>& chain) {
+  RobotBagOptions options;
+  options.scan_topic = "/scan";
+  Result<RobotBag> r = read_robot_bag(path, options);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->log.scans.size(), scans);
+  EXPECT_EQ(r->base_frame, chain.front());
+  EXPECT_EQ(r->laser_frame, "base_laser_link");
+  EXPECT_EQ(r->odom_frame, "odom");
+  EXPECT_EQ(r->log.odometry.size(), odometry);
+  const Pose2 expected = static_chain(path, chain);
+  std::size_t full_scans = 0;
+  for (const StampedScan& s : r->log.scans) {
+    EXPECT_NEAR(s.laser_in_robot.x, expected.x, 1e-9);
+    EXPECT_NEAR(s.laser_in_robot.y, expected.y, 1e-9);
+    EXPECT_NEAR(std::abs(normalize_angle(s.laser_in_robot.theta - expected.theta)), 0.0, 1e-9);
+    if (s.scan.ranges_m.size() == 361u) {
+      ++full_scans;
+      EXPECT_NEAR(s.scan.angle_increment_rad, kPi / 180.0, 1e-6);  // 1 degree
+    }
+    EXPECT_NEAR(s.scan.max_range_m, 5.0, 1e-6);
+    EXPECT_NEAR(s.scan.min_range_m, 0.02, 1e-6);
+  }
+  // 361 beams at 1 degree; the ROS 1 bag holds one 36-beam scan as the driver sent it.
+  EXPECT_GE(full_scans, scans - 1);
+  // The driver's no-reading value really occurs and is read as no return.
+  BagReadOptions keep;
+  keep.keep = [](const BagTopic& t) { return t.name == "/scan"; };
+  Result<RosBag> bag = read_ros_bag(path, keep);
+  const RosEncoding e = bag->topics[bag->messages[0].topic].serialization == "cdr"
+                            ? RosEncoding::kCdr
+                            : RosEncoding::kRos1;
+  Result<LaserScanMessage> first = decode_laser_scan(bag->bytes(bag->messages[0]), e);
+  ASSERT_TRUE(first.ok());
+  EXPECT_EQ(first->ranges_m.size(), 361u);
+  std::size_t found = 0;
+  for (std::size_t b = 0; b < first->ranges_m.size(); ++b) {
+    const float v = first->ranges_m[b];
+    if ((std::isinf(no_reading) && std::isinf(v)) || v == no_reading) {
+      ++found;
+      EXPECT_EQ(r->log.scans[0].scan.ranges_m[b], r->log.scans[0].scan.max_range_m);
+    } else {
+      EXPECT_NEAR(r->log.scans[0].scan.ranges_m[b], v, 1e-6);
+    }
+  }
+  EXPECT_GT(found, 0u);
+}
+
+TEST(RobotBagRealData, Ros2FiniteStateControllerLaserPoseMatchesTfStatic) {
+  const auto path = support::data_path("bags/ros2_neato_finite_state_controller");
+  TESSERA_REQUIRE_DATA(path);
+  expect_neato_bag(path, 280, 301, std::numeric_limits<float>::infinity(),
+                   {"base_footprint", "base_link", "base_laser_link"});
+}
+
+TEST(RobotBagRealData, Ros2ObstacleAvoiderLaserPoseMatchesTfStatic) {
+  const auto path = support::data_path("bags/ros2_neato_obstacle_avoider");
+  TESSERA_REQUIRE_DATA(path);
+  expect_neato_bag(path, 153, 166, std::numeric_limits<float>::infinity(),
+                   {"base_footprint", "base_link", "base_laser_link"});
+}
+
+TEST(RobotBagRealData, Ros1NeatoLaserPoseMatchesTfStatic) {
+  const auto path = support::data_path("bags/ros1_neato_drive_square_demo.bag");
+  TESSERA_REQUIRE_DATA(path);
+  expect_neato_bag(path, 404, 413, 0.0F, {"base_link", "base_laser_link"});
+}
+
+}  // namespace
+}  // namespace tessera

@@ -38,6 +38,7 @@ nlohmann::json row_json(const BobTableRow& r) {
   return {{"cells", r.cells},
           {"sensed_cells", r.sensed_cells},
           {"resensed_cells", r.resensed},
+          {"ignored_readings", r.ignored_readings},
           {"empty_as_occupied", r.empty_as_occupied},
           {"occupied_as_empty", r.occupied_as_empty},
           {"success_rate", r.success_rate},
@@ -87,6 +88,11 @@ BobCommand::BobCommand(CLI::App& app) {
   sub_->add_option("--noise", noise_, "Noise of the IR sensors, encoders and beacons: on or off")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  sub_->add_option("--resense", resense_,
+                   "BOBMapping 3.4 re-sensing: on (a later reading changes a sensed cell) or off "
+                   "(the first reading of a cell stays)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   sub_->add_option("--localisation", localisation_,
                    "beacons (encoders between ultrasonic fixes, BOBMapping 3.3) or perfect "
                    "(exact motion, the true pose known)")
@@ -112,6 +118,7 @@ int BobCommand::run() const {
   BobMissionOptions options;
   options.variant = variant_ == "map-aware" ? BobVariant::kMapAware : BobVariant::kTrail;
   options.noise = noise_ == "on";
+  options.resense = resense_ == "on";
   options.seed = seed_;
   options.cell_m = cell_m_;
   options.perfect_localisation = localisation_ == "perfect";
@@ -145,6 +152,7 @@ int BobCommand::run() const {
                             {{"cell_m", cell_m_},
                              {"variant", variant_},
                              {"noise", noise_},
+                             {"resense", resense_},
                              {"start", {r.start.x, r.start.y}},
                              {"localisation", localisation_}}},
                            {"world",

@@ -95,6 +95,7 @@ class BobCommand : public Command {
   double cell_m_ = 0.22;
   std::string variant_ = "trail";
   std::string noise_ = "on";
+  std::string resense_ = "on";
   std::string localisation_ = "beacons";
   std::uint64_t seed_ = 1;
   std::optional<std::string> start_;

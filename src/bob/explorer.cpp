@@ -76,6 +76,10 @@ Status Explorer::sense(GridCell c, bool occupied) {
   if (!initialised_) return Status::kNotStarted;
   if (!map_.contains(c)) return Status::kOutOfBounds;
   const CellState reading = occupied ? CellState::kOccupied : CellState::kFree;
+  if (!options_.resense && map_.state(c) != CellState::kUnsensed) {
+    ++ignored_;  // re-sensing off: the first reading stays
+    return Status::kOk;
+  }
   switch (map_.state(c)) {
     case CellState::kUnsensed:
       --unsensed_;

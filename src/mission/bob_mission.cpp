@@ -244,7 +244,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
   for (std::size_t k = 0; k < candidates.size() && started != bob::Status::kOk; ++k) {
     start = candidates[k];
     if (const bob::Status s =
-            explorer.init(bob::ExplorerOptions{backtrack}, buffers->map.data(), buffers->map.size(),
+            explorer.init(bob::ExplorerOptions{backtrack, options.resense}, buffers->map.data(), buffers->map.size(),
                           buffers->final_map.data(), buffers->final_map.size(), g.width(),
                           g.height());
         s != bob::Status::kOk) {
@@ -420,6 +420,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
     }
   }
   row.resensed = static_cast<int>(explorer.resensed());
+  row.ignored_readings = static_cast<int>(explorer.ignored_readings());
   row.path_cells = static_cast<int>(explorer.moves());
   row.turns = static_cast<int>(explorer.turns());
   row.success_rate =

@@ -77,6 +77,21 @@ TEST(CliBob, WritesMonitorMapAndReportForBothVariants) {
   }
 }
 
+TEST(CliBob, ResenseOffIsRecordedInTheReportAndABadValueIsAUsageError) {
+  TempDir dir;
+  const auto world = write_world(dir, kRoom);
+  const auto out = dir.path() / "out";
+  const support::CliRun run = run_cli("bob --world " + world.string() +
+                                      " --resense off --seed 3 --quiet --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
+  EXPECT_EQ(report["options"]["resense"], "off");
+  EXPECT_EQ(report["bob"]["resensed_cells"], 0);
+  const support::CliRun bad = run_cli("bob --world " + world.string() +
+                                      " --resense maybe --quiet --out " + out.string() + "2");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+}
+
 int count_lines(const std::string& s) {
   return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
 }

@@ -137,6 +137,8 @@ class Explorer {
   /// "Occupied" readings of visited cells: kept out of the mapping state, recorded in the final
   /// map only.
   [[nodiscard]] std::uint32_t discarded_readings() const { return discarded_; }
+  /// Readings of already sensed cells ignored because re-sensing is off (ExplorerOptions).
+  [[nodiscard]] std::uint32_t ignored_readings() const { return ignored_; }
   /// Cells of the grid not sensed yet.
   [[nodiscard]] int unsensed_cells() const { return unsensed_; }
 
@@ -189,6 +191,7 @@ class Explorer {
   std::uint32_t quarter_turns_ = 0;
   std::uint32_t resensed_ = 0;
   std::uint32_t discarded_ = 0;
+  std::uint32_t ignored_ = 0;
   std::uint32_t blocked_moves_ = 0;
   // What blocked() needs to take the last move back (kUndo* bits).
   std::uint8_t undo_ = 0;

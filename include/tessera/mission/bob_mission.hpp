@@ -60,6 +60,9 @@ struct BobMissionOptions {
   /// ranges. Off: exact readings, so motion and localisation are exact too.
   bool noise = true;
   std::uint64_t seed = 1;
+  /// BOBMapping 3.4 re-sensing (bob::ExplorerOptions::resense): off keeps each cell's first
+  /// reading, the paper's "20 errors ... dropped to six" ablation.
+  bool resense = true;
   /// Exact motion and localisation whatever `noise` says (the robot knows its true pose).
   bool perfect_localisation = false;
   WheelEncoderOptions encoders;
@@ -87,6 +90,7 @@ struct BobTableRow {
   int cells = 0;         // cells in the configuration: every cell of the grid (W x H)
   int sensed_cells = 0;  // cells sensed at least once
   int resensed = 0;      // readings that changed an already sensed cell
+  int ignored_readings = 0;  // readings of sensed cells ignored with re-sensing off
   // Errors over sensed cells of the final map (BobResult::final_map: a visited cell with an
   // obstacle detected inside counts as occupied), scored with a don't-care band of
   // boundary_tolerance_m either side of each cell edge (the robot knows its grid only to its

@@ -104,6 +104,20 @@ Status Explorer::sense(GridCell c, bool occupied) {
   return Status::kOk;
 }
 
+Status Explorer::report_target(GridCell c, bool occupied) {
+  if (!initialised_) return Status::kNotStarted;
+  if (!map_.contains(c)) return Status::kOutOfBounds;
+  if (occupied && map_.state(c) == CellState::kVisited) return Status::kOk;
+  return sense(c, occupied);
+}
+
+Status Explorer::report_detection(GridCell c) {
+  if (!initialised_) return Status::kNotStarted;
+  if (!map_.contains(c)) return Status::kOutOfBounds;
+  if (map_.state(c) == CellState::kUnsensed) return Status::kOk;
+  return sense(c, true);
+}
+
 Status Explorer::start(GridCell cell, Direction heading) {
   if (!initialised_) return Status::kNotStarted;
   if (started_) return Status::kAlreadyStarted;

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "tessera/bob/explorer.hpp"
+#include "tessera/mission/bob_explorer_port.hpp"
 #include "tessera/core/cell.hpp"
 #include "tessera/core/result.hpp"
 #include "tessera/sensors/beacon_trilateration.hpp"
@@ -151,5 +152,12 @@ struct BobResult {
 /// explorer did not stop within 64 moves per cell (a bug).
 /// Cost: O(moves) with kTrail, O(moves * cells) with kMapAware.
 [[nodiscard]] Result<BobResult> run_bob(const World& world, const BobMissionOptions& options);
+
+/// The same with the explorer behind `explorer` (the firmware across a serial link, for one):
+/// run_bob(world, options) is this with a bob::Explorer in this process. The explorer's answers
+/// decide the run; a link error stops it (its Error). Deterministic for a given seed when the
+/// explorer is.
+[[nodiscard]] Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
+                                        BobExplorerPort& explorer);
 
 }  // namespace tessera

@@ -1,12 +1,23 @@
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <optional>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "commands.hpp"
 #include "tessera/io/atomic_file.hpp"
+#include "tessera/io/bob_firmware_link.hpp"
 #include "tessera/io/bob_map_file.hpp"
 #include "tessera/io/bob_monitor.hpp"
 #include "tessera/io/image_file.hpp"
@@ -19,6 +30,65 @@ namespace {
 // Built-in worlds are drawn at this resolution, finer than the robot's cells, so that their
 // obstacles straddle cell boundaries as real ones do.
 constexpr double kBuiltinResolutionM = 0.05;
+
+/// QEMU running the firmware on an emulated MPS2 AN386 (Cortex-M4), its UART0 connected to
+/// 127.0.0.1:port. Stopped (SIGTERM, then SIGKILL) when this goes out of scope, whatever happened.
+class Emulator {
+ public:
+  Emulator() = default;
+  Emulator(const Emulator&) = delete;
+  Emulator& operator=(const Emulator&) = delete;
+  ~Emulator() { stop(); }
+
+  Result<bool> start(const std::string& qemu, const std::string& elf, int port) {
+    std::vector<std::string> args = {qemu,
+                                     "-M",
+                                     "mps2-an386",
+                                     "-display",
+                                     "none",
+                                     "-monitor",
+                                     "none",
+                                     "-serial",
+                                     "tcp:127.0.0.1:" + std::to_string(port),
+                                     "-semihosting-config",
+                                     "enable=on,target=native",
+                                     "-kernel",
+                                     elf};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    const int rc = posix_spawnp(&pid_, qemu.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (rc != 0) {
+      pid_ = -1;
+      return runtime_error("cannot start " + qemu + ": " + std::strerror(rc));
+    }
+    return true;
+  }
+
+  void stop() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGTERM);
+    int status = 0;
+    for (int i = 0; i < 50; ++i) {  // up to 1 s, then SIGKILL
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1;
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ::kill(pid_, SIGKILL);
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+};
 
 const char* stop_reason_name(bob::StopReason r) {
   switch (r) {
@@ -103,6 +173,16 @@ BobCommand::BobCommand(CLI::App& app) {
                    "Start X,Y in metres: the robot starts in the cell holding it, facing North, "
                    "whose cell must be free. Default: in the largest free area, the first cell "
                    "with a free cell North of it");
+  sub_->add_option("--firmware", firmware_,
+                   "Run the explorer as this firmware image (firmware/bob, make bob-firmware) on "
+                   "an emulated Cortex-M4 (QEMU mps2-an386) fed by this simulator over its serial "
+                   "port; the run fails unless its final map and route are the host build's")
+      ->check(CLI::ExistingFile);
+  sub_->add_option("--qemu", qemu_, "QEMU for --firmware")->capture_default_str();
+  sub_->add_option("--firmware-timeout", firmware_timeout_s_,
+                   "Seconds --firmware waits for any one answer of the firmware")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
   sub_->add_flag("--quiet", quiet_, "No summary");
 }
@@ -128,13 +208,50 @@ int BobCommand::run() const {
     options.start = cells.cell_at_unchecked(*p);
   }
 
+  // --firmware: the explorer runs as firmware on the emulated board; the host build's own run of
+  // the same world and seed must give the same final map, byte for byte.
+  std::optional<Result<BobResult>> firmware_result;
+  Emulator emulator;
+  if (firmware_) {
+    Result<std::unique_ptr<BobFirmwareLink>> link =
+        BobFirmwareLink::listen(std::chrono::milliseconds(
+            static_cast<long long>(std::lround(firmware_timeout_s_ * 1000.0))));
+    if (!link) return report_error(link.error());
+    if (Result<bool> up = emulator.start(qemu_, firmware_->string(), (*link)->port()); !up) {
+      return report_error(up.error());
+    }
+    if (Result<bool> ok = (*link)->accept(); !ok) return report_error(ok.error());
+    const bob::ExplorerOptions fw = (*link)->firmware_options();
+    const bool fw_map_aware = fw.backtrack == bob::Backtrack::kShortestKnownPath;
+    if (fw_map_aware != (options.variant == BobVariant::kMapAware) ||
+        fw.resense != options.resense) {
+      return report_error(usage_error(
+          firmware_->string() + ": the firmware runs the " + (fw_map_aware ? "map-aware" : "trail") +
+          " variant with re-sensing " + (fw.resense ? "on" : "off") + "; pass the same --variant "
+          "and --resense"));
+    }
+    firmware_result = run_bob(world, options, **link);
+    emulator.stop();
+    if (!*firmware_result) return report_error(firmware_result->error());
+  }
   Result<BobResult> result = run_bob(world, options);
   if (!result) {
     Error e = result.error();
     if (e.kind == ErrorKind::kInput) e.message = world_name + ": " + e.message;
     return report_error(e);
   }
-  const BobResult& r = *result;
+  if (firmware_result) {
+    const BobResult& f = **firmware_result;
+    if (f.final_map != result->final_map || f.route != result->route) {
+      return report_error(runtime_error(
+          "the firmware's run differs from the host's: final map " +
+          std::string(f.final_map == result->final_map ? "identical" : "different") + ", route " +
+          (f.route == result->route ? "identical" : "different") + " (" +
+          std::to_string(f.route.size()) + " vs " + std::to_string(result->route.size()) +
+          " cells)"));
+    }
+  }
+  const BobResult& r = firmware_result ? **firmware_result : *result;
 
   BobMapFile map_file;
   map_file.width = r.width;
@@ -164,6 +281,12 @@ int BobCommand::run() const {
                            {"localisation", localisation_json(r.localisation)}};
   report["bob"]["stop_reason"] = stop_reason_name(r.stop_reason);
   report["bob"]["variant"] = variant_;
+  if (firmware_) {
+    report["firmware"] = {{"elf", firmware_->string()},
+                          {"board", "mps2-an386 (QEMU)"},
+                          {"final_map_identical_to_host", true},
+                          {"route_identical_to_host", true}};
+  }
   const std::string json = encode_json(report);
 
   if (Status s = ensure_directory(out_); !s) return report_error(s.error());
@@ -181,6 +304,10 @@ int BobCommand::run() const {
     const BobLocalisationStats& l = r.localisation;
     fmt::print("localisation: {}, {} fixes, {} repositionings, {} bumps, worst error {:.3f} m\n",
                localisation_, l.fixes, l.repositionings, l.bumps, l.max_position_error_m);
+    if (firmware_) {
+      fmt::print("firmware: {} on mps2-an386, final map and route identical to the host's\n",
+                 firmware_->string());
+    }
     fmt::print("outputs: {}/monitor.png map.bob report.json\n", out_.string());
   }
   return kExitOk;

@@ -101,6 +101,9 @@ class BobCommand : public Command {
   std::optional<std::string> start_;
   std::filesystem::path out_ = "out/bob";
   bool quiet_ = false;
+  std::optional<std::filesystem::path> firmware_;
+  std::string qemu_ = "qemu-system-arm";
+  double firmware_timeout_s_ = 20.0;
 };
 
 /// tessera eval relations | ate: scores a trajectory against ground-truth relations (Kummerle et

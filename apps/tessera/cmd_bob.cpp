@@ -1,7 +1,7 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <signal.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -57,15 +57,20 @@ class Emulator {
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    const int rc = posix_spawnp(&pid_, qemu.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (rc != 0) {
-      pid_ = -1;
-      return runtime_error("cannot start " + qemu + ": " + std::strerror(rc));
+    const pid_t parent = ::getpid();
+    pid_ = ::fork();
+    if (pid_ < 0) return runtime_error(std::string("cannot start ") + qemu + ": fork failed");
+    if (pid_ == 0) {
+      // The emulator dies with this process, even if it is killed (a timeout in a test).
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (::getppid() != parent) ::_exit(127);
+      const int null_fd = ::open("/dev/null", O_RDWR);
+      if (null_fd >= 0) {
+        ::dup2(null_fd, 0);
+        ::dup2(null_fd, 1);
+      }
+      ::execvp(argv[0], argv.data());
+      ::_exit(127);
     }
     return true;
   }
@@ -220,7 +225,10 @@ int BobCommand::run() const {
     if (Result<bool> up = emulator.start(qemu_, firmware_->string(), (*link)->port()); !up) {
       return report_error(up.error());
     }
-    if (Result<bool> ok = (*link)->accept(); !ok) return report_error(ok.error());
+    if (Result<bool> ok = (*link)->accept(); !ok) {
+      return report_error(runtime_error(qemu_ + " -M mps2-an386 -kernel " + firmware_->string() +
+                                        ": " + ok.error().message));
+    }
     const bob::ExplorerOptions fw = (*link)->firmware_options();
     const bool fw_map_aware = fw.backtrack == bob::Backtrack::kShortestKnownPath;
     if (fw_map_aware != (options.variant == BobVariant::kMapAware) ||

@@ -70,13 +70,39 @@ World labyrinth(double resolution_m) {
   return rasterize_boxes(walls, 8.0, 8.0, resolution_m, "builtin:labyrinth");
 }
 
+// BOBMapping 4.2: "a laboratory room ... obstacles simulated using expanded polystyrene barriers",
+// mapped on an 11 x 14 grid of 22 cm cells. The paper's figures are not in its text, so the
+// barriers are drawn here: an L, a box, a T and a board, placed off the cell lines. 2.40 x 3.05 m,
+// which the robot's grid covers with 11 x 14 cells.
+std::vector<Box> arena_barriers() {
+  return {{0.50, 1.90, 0.55, 2.60}, {0.50, 2.55, 1.20, 2.60}, {1.55, 1.95, 1.90, 2.30},
+          {1.10, 0.95, 1.70, 1.00}, {1.35, 1.00, 1.40, 1.30}, {0.45, 0.50, 0.90, 0.55}};
+}
+constexpr double kArenaW = 2.40, kArenaH = 3.05, kBoardT = 0.03;
+
+World bob_arena(double resolution_m, bool closed) {
+  std::vector<Box> boxes = arena_barriers();
+  if (closed) {
+    boxes.push_back({0, 0, kArenaW, kBoardT});
+    boxes.push_back({0, kArenaH - kBoardT, kArenaW, kArenaH});
+    boxes.push_back({0, 0, kBoardT, kArenaH});
+    boxes.push_back({kArenaW - kBoardT, 0, kArenaW, kArenaH});
+  }
+  return rasterize_boxes(boxes, kArenaW, kArenaH, resolution_m,
+                         closed ? "builtin:bob-arena" : "builtin:bob-arena-open");
+}
+
 }  // namespace
 
-std::vector<std::string> builtin_world_names() { return {"office", "labyrinth"}; }
+std::vector<std::string> builtin_world_names() {
+  return {"office", "labyrinth", "bob-arena", "bob-arena-open"};
+}
 
 World builtin_world(const std::string& name, double resolution_m) {
   if (name == "office") return office(resolution_m);
   if (name == "labyrinth") return labyrinth(resolution_m);
+  if (name == "bob-arena") return bob_arena(resolution_m, true);
+  if (name == "bob-arena-open") return bob_arena(resolution_m, false);
   return World();
 }
 

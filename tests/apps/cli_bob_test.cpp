@@ -92,6 +92,34 @@ TEST(CliBob, ResenseOffIsRecordedInTheReportAndABadValueIsAUsageError) {
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
 }
 
+TEST(CliBob, MapBobOpensInInfoAndRenderAndATruncatedOneIsAnInputError) {
+  TempDir dir;
+  const auto world = write_world(dir, kRoom);
+  const auto out = dir.path() / "out";
+  ASSERT_EQ(run_cli("bob --world " + world.string() + " --noise off --quiet --out " + out.string())
+                .exit_code,
+            0);
+  const support::CliRun info = run_cli("info --json " + (out / "map.bob").string());
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  const nlohmann::json j = nlohmann::json::parse(info.output);
+  EXPECT_EQ(j["format"], "bob");
+  EXPECT_EQ(j["width_cells"], 12);
+  EXPECT_EQ(j["height_cells"], 9);
+  EXPECT_DOUBLE_EQ(j["resolution_m"].get<double>(), 0.22);
+  // kRoom with noise off: mapped exactly, so the free cells are the room's 65.
+  EXPECT_EQ(j["free_cells"], 65);
+  const auto png = dir.path() / "map.png";
+  const support::CliRun render =
+      run_cli("render " + (out / "map.bob").string() + " --out " + png.string());
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  EXPECT_TRUE(std::filesystem::exists(png));
+  const std::string bytes = read_bytes(out / "map.bob");
+  support::write_bytes(dir / "short.bob", bytes.substr(0, bytes.size() - 1));
+  const support::CliRun bad = run_cli("info " + (dir.path() / "short.bob").string());
+  EXPECT_EQ(bad.exit_code, 3) << bad.output;
+  EXPECT_THAT(bad.output, HasSubstr("short.bob"));
+}
+
 int count_lines(const std::string& s) {
   return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
 }

@@ -188,6 +188,9 @@ BobCommand::BobCommand(CLI::App& app) {
                    "Seconds --firmware waits for any one answer of the firmware")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  sub_->add_option("--monitor-dir", monitor_dir_,
+                   "Write the monitor picture (map and route so far) after every step as "
+                   "step_NNNNN.png in this folder");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
   sub_->add_flag("--quiet", quiet_, "No summary");
 }
@@ -213,6 +216,23 @@ int BobCommand::run() const {
     options.start = cells.cell_at_unchecked(*p);
   }
 
+  // --monitor-dir: a picture of the robot's map and route after every step (BOBMapping Figure 5a's
+  // monitor), from the firmware's own stream with --firmware.
+  Status monitor_status = Ok{};
+  int frame = 0;
+  if (monitor_dir_) {
+    if (Status s = ensure_directory(*monitor_dir_); !s) return report_error(s.error());
+    options.on_step = [&](const BobResult& so_far) {
+      if (!monitor_status) return;
+      Result<std::string> png = encode_png(render_bob_monitor(so_far));
+      if (!png) {
+        monitor_status = png.error();
+        return;
+      }
+      monitor_status =
+          write_file_atomic(*monitor_dir_ / fmt::format("step_{:05d}.png", frame++), *png);
+    };
+  }
   // --firmware: the explorer runs as firmware on the emulated board; the host build's own run of
   // the same world and seed must give the same final map, byte for byte.
   std::optional<Result<BobResult>> firmware_result;
@@ -241,8 +261,10 @@ int BobCommand::run() const {
     firmware_result = run_bob(world, options, **link);
     emulator.stop();
     if (!*firmware_result) return report_error(firmware_result->error());
+    options.on_step = nullptr;  // the monitor shows the firmware's run
   }
   Result<BobResult> result = run_bob(world, options);
+  if (!monitor_status) return report_error(monitor_status.error());
   if (!result) {
     Error e = result.error();
     if (e.kind == ErrorKind::kInput) e.message = world_name + ": " + e.message;

@@ -10,12 +10,15 @@
 // docs/bob-firmware.md:
 //   F: "H <variant> <resense>"            hello: 0 trail / 1 map-aware; re-sensing 1 on / 0 off
 //   F: "W"             H: "G <w> <h>"      grid size   F: "I <status>"  (Explorer::init)
-//   F: "S"             H: readings, "E"    sensing at the start pose
+//   F: "S"             H: readings, "E"    sensing at the start pose   F: "U <maps>"
 //   F: "P"             H: "C <x> <y>"      start cell  F: "A <status>"  (Explorer::start)
 //   (status != 0: back to "W" with the next start cell)
 //   F: "M <direction>" H: readings, "E"    one move (0 N, 1 E, 2 S, 3 W) and what it saw
-//                      H: "B"              ... or a bump: F: "A <status>" (Explorer::blocked)
-//   F: "F <status> <stop reason> <moves> <turns> <re-sensed> <ignored>", "P <hex>", "D <hex>"
+//                                          F: "U <maps>"
+//                      H: "B"              ... or a bump: F: "A <status>" (Explorer::blocked),
+//                                          "U <maps>"
+//   F: "F <status> <stop reason> <moves> <turns> <re-sensed> <ignored>", "D <maps>"
+//   maps: "<4-bit map hex> <final map hex>", the bytes of PackedMap and FinalMap in memory order
 //   readings: "T <x> <y> <occupied 0/1>" (a swept target cell), "X <x> <y>" (another detection)
 
 #include <cstddef>
@@ -104,14 +107,21 @@ void send1(char letter, std::uint32_t value) {
   put('\n');
 }
 
-void send_hex(char letter, const std::uint8_t* bytes, std::size_t n) {
+void put_hex(const std::uint8_t* bytes, std::size_t n) {
   constexpr char kHex[] = "0123456789abcdef";
-  put(letter);
   put(' ');
   for (std::size_t i = 0; i < n; ++i) {
     put(kHex[bytes[i] >> 4]);
     put(kHex[bytes[i] & 0xFu]);
   }
+}
+
+// The monitor's stream (section 4.2: the robot reports to a listening monitor): both maps as
+// they stand, after every step.
+void send_maps(char letter) {
+  put(letter);
+  put_hex(g_explorer.map().data(), g_explorer.map().memory_bytes());
+  put_hex(g_explorer.final_map().data(), g_explorer.final_map().memory_bytes());
   put('\n');
 }
 
@@ -148,9 +158,11 @@ void take_readings() {
       (void)g_explorer.report_detection({v[0], v[1]});
     } else if (letter == 'B') {  // the motors stalled against an obstacle: the move is undone
       send1('A', static_cast<std::uint32_t>(g_explorer.blocked()));
+      send_maps('U');
       return;
-    } else {
-      return;  // 'E'
+    } else {  // 'E'
+      send_maps('U');
+      return;
     }
   }
 }
@@ -201,8 +213,7 @@ void take_readings() {
   field(g_explorer.resensed());
   field(g_explorer.ignored_readings());
   put('\n');
-  send_hex('P', g_explorer.map().data(), g_explorer.map().memory_bytes());
-  send_hex('D', g_explorer.final_map().data(), g_explorer.final_map().memory_bytes());
+  send_maps('D');
   stop();
 }
 

@@ -44,6 +44,21 @@ Result<std::vector<std::uint8_t>> hex_bytes(const std::string& line) {
   return out;
 }
 
+// "<letter> <4-bit map hex> <final map hex>".
+Result<BobExplorerSummary> maps_of(const std::string& line) {
+  const std::size_t a = line.find(' ');
+  const std::size_t b = a == std::string::npos ? a : line.find(' ', a + 1);
+  if (b == std::string::npos) return runtime_error("firmware: expected two maps, got \"" + line + "\"");
+  Result<std::vector<std::uint8_t>> packed = hex_bytes(line.substr(a, b - a));
+  if (!packed) return packed.error();
+  Result<std::vector<std::uint8_t>> final_map = hex_bytes(line.substr(b));
+  if (!final_map) return final_map.error();
+  BobExplorerSummary out;
+  out.packed_map = std::move(*packed);
+  out.final_map = std::move(*final_map);
+  return out;
+}
+
 Result<bob::Status> status_of(const std::string& line) {
   const std::vector<long long> v = numbers_of(line);
   if (v.size() != 1 || v[0] < 0 || v[0] > static_cast<long long>(bob::Status::kAlreadyStarted)) {
@@ -178,6 +193,7 @@ Result<bob::Status> BobFirmwareLink::report(const StepSensing& step) {
   }
   text += "E\n";
   if (Result<bool> ok = write(text); !ok) return ok.error();
+  if (Status s = read_maps(); !s) return s.error();
   return bob::Status::kOk;
 }
 
@@ -216,16 +232,12 @@ Result<bob::Status> BobFirmwareLink::next_move(bob::Direction& move) {
   summary_.turns = static_cast<std::uint32_t>(v[3]);
   summary_.resensed = static_cast<std::uint32_t>(v[4]);
   summary_.ignored_readings = static_cast<std::uint32_t>(v[5]);
-  Result<std::string> packed = expect('P', "the 4-bit map");
-  if (!packed) return packed.error();
-  Result<std::string> final_map = expect('D', "the final map");
-  if (!final_map) return final_map.error();
-  Result<std::vector<std::uint8_t>> p = hex_bytes(*packed);
-  if (!p) return p.error();
-  Result<std::vector<std::uint8_t>> d = hex_bytes(*final_map);
-  if (!d) return d.error();
-  summary_.packed_map = std::move(*p);
-  summary_.final_map = std::move(*d);
+  Result<std::string> maps = expect('D', "its final maps");
+  if (!maps) return maps.error();
+  Result<BobExplorerSummary> m = maps_of(*maps);
+  if (!m) return m.error();
+  summary_.packed_map = std::move(m->packed_map);
+  summary_.final_map = std::move(m->final_map);
   finished_ = true;
   return status_of("F " + std::to_string(v[0]));
 }
@@ -234,8 +246,20 @@ Result<bob::Status> BobFirmwareLink::blocked() {
   if (Result<bool> ok = write("B\n"); !ok) return ok.error();
   Result<std::string> a = expect('A', "the blocked status");
   if (!a) return a.error();
+  if (Status s = read_maps(); !s) return s.error();
   return status_of(*a);
 }
+
+Status BobFirmwareLink::read_maps() {
+  Result<std::string> line = expect('U', "its maps after the step");
+  if (!line) return line.error();
+  Result<BobExplorerSummary> m = maps_of(*line);
+  if (!m) return m.error();
+  snapshot_ = std::move(*m);
+  return Ok{};
+}
+
+Result<BobExplorerSummary> BobFirmwareLink::snapshot() { return snapshot_; }
 
 Result<BobExplorerSummary> BobFirmwareLink::summary() {
   if (!finished_) return runtime_error("firmware: asked for its maps before it finished");

@@ -154,6 +154,7 @@ class LocalExplorerPort final : public BobExplorerPort {
     return explorer_.next_move(move);
   }
   Result<bob::Status> blocked() override { return explorer_.blocked(); }
+  Result<BobExplorerSummary> snapshot() override { return summary(); }
   Result<BobExplorerSummary> summary() override {
     BobExplorerSummary out;
     out.stop_reason = explorer_.stop_reason();
@@ -290,6 +291,31 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
   out.width = g.width();
   out.height = g.height();
   out.route.push_back(start);
+  // The monitor's view of the run so far (BobMissionOptions::on_step).
+  const auto notify = [&]() -> Status {
+    if (!options.on_step) return Ok{};
+    Result<BobExplorerSummary> now = explorer.snapshot();
+    if (!now) return now.error();
+    BobResult view;
+    view.start = out.start;
+    view.width = out.width;
+    view.height = out.height;
+    view.route = out.route;
+    view.final_map = now->final_map;
+    view.sensed.assign(g.size(), 0);
+    std::vector<std::uint8_t> bytes(bob::PackedMap::bytes_needed(g.width(), g.height()));
+    bob::PackedMap map;
+    if (map.init(bytes.data(), bytes.size(), g.width(), g.height()) == bob::Status::kOk &&
+        now->packed_map.size() == bytes.size()) {
+      std::copy(now->packed_map.begin(), now->packed_map.end(), bytes.begin());
+      for (std::size_t i = 0; i < g.size(); ++i) {
+        view.sensed[i] = map.state(to_grid(g.cell_of(i))) != bob::CellState::kUnsensed ? 1 : 0;
+      }
+    }
+    options.on_step(view);
+    return Ok{};
+  };
+  if (Status s = notify(); !s) return s.error();
 
   internal::BobBody body(body_options, centred_pose(g, start, 0), rng);
   BobLocalisationStats& loc = out.localisation;
@@ -385,6 +411,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
       if (*b != bob::Status::kOk) {
         return runtime_error(std::string("explorer: ") + bob::status_name(*b));
       }
+      if (Status n = notify(); !n) return n.error();
       if (!options.perfect_localisation) {
         linear_since_fix = 0;
         (void)take_fix();
@@ -401,6 +428,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
         std::max(loc.max_heading_error_rad, std::abs(normalize_angle(b.theta - t.theta)));
     pos = next;
     out.route.push_back(pos);
+    if (Status n = notify(); !n) return n.error();
   }
   if (loc.fixes > 0) loc.mean_fix_error_m = fix_error_sum_m / loc.fixes;
   Result<BobExplorerSummary> summary = explorer.summary();

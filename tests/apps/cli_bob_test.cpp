@@ -34,6 +34,11 @@ std::filesystem::path write_world(const TempDir& dir, const std::vector<std::str
   return dir.path() / "w.yaml";
 }
 
+std::string fmt_step(int n) {
+  std::string s = std::to_string(n);
+  return std::string(5 - s.size(), '0') + s;
+}
+
 const std::vector<std::string> kRoom = {"############", "#..........#", "#..........#",
                                         "#...##.....#", "#...##.....#", "#..........#",
                                         "#.....#....#", "#..........#", "############"};
@@ -118,6 +123,27 @@ TEST(CliBob, MapBobOpensInInfoAndRenderAndATruncatedOneIsAnInputError) {
   const support::CliRun bad = run_cli("info " + (dir.path() / "short.bob").string());
   EXPECT_EQ(bad.exit_code, 3) << bad.output;
   EXPECT_THAT(bad.output, HasSubstr("short.bob"));
+}
+
+TEST(CliBob, MonitorDirHoldsOnePictureForTheStartAndOneForEveryMove) {
+  TempDir dir;
+  const auto world = write_world(dir, kRoom);
+  const auto out = dir.path() / "out";
+  const auto monitor = dir.path() / "monitor";
+  const support::CliRun run = run_cli("bob --world " + world.string() + " --noise off --monitor-dir " +
+                                      monitor.string() + " --quiet --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
+  const int moves = report["bob"]["path_cells"].get<int>();
+  int frames = 0;
+  for (const auto& e : std::filesystem::directory_iterator(monitor)) {
+    EXPECT_EQ(e.path().extension(), ".png");
+    ++frames;
+  }
+  EXPECT_EQ(frames, moves + 1);  // noise off: no bumps
+  EXPECT_TRUE(std::filesystem::exists(monitor / "step_00000.png"));
+  EXPECT_EQ(read_bytes(monitor / ("step_" + fmt_step(moves) + ".png")),
+            read_bytes(out / "monitor.png"));
 }
 
 int count_lines(const std::string& s) {

@@ -36,6 +36,7 @@ class BobFirmwareLink final : public BobExplorerPort {
   Result<bob::Status> next_move(bob::Direction& move) override;
   Result<bob::Status> blocked() override;
   Result<BobExplorerSummary> summary() override;
+  Result<BobExplorerSummary> snapshot() override;
 
   /// Every line the firmware sent, for a monitor or a log (io/bob_monitor.hpp).
   [[nodiscard]] const std::string& transcript() const { return transcript_; }
@@ -46,6 +47,8 @@ class BobFirmwareLink final : public BobExplorerPort {
   /// Reads a line and checks that it starts with `letter`.
   [[nodiscard]] Result<std::string> expect(char letter, const char* what);
   [[nodiscard]] Result<bool> write(const std::string& text);
+  /// The "U" line the firmware streams after every step: its maps, kept for snapshot().
+  [[nodiscard]] Status read_maps();
 
   std::chrono::milliseconds timeout_;
   int listen_fd_ = -1;
@@ -55,6 +58,7 @@ class BobFirmwareLink final : public BobExplorerPort {
   std::string transcript_;
   bob::ExplorerOptions firmware_options_{};
   BobExplorerSummary summary_;
+  BobExplorerSummary snapshot_;
   bool finished_ = false;
   bool start_sensing_ = false;  // the firmware asks "S" for the readings at the start pose
 };

@@ -43,6 +43,9 @@ class BobExplorerPort {
   [[nodiscard]] virtual Result<bob::Status> blocked() = 0;
   /// After next_move() returned kFinished.
   [[nodiscard]] virtual Result<BobExplorerSummary> summary() = 0;
+  /// The maps as they stand after the last report() or blocked() (the firmware streams them after
+  /// every step, as the paper's robot fed its monitor, Figure 5a); counters may be 0 until the end.
+  [[nodiscard]] virtual Result<BobExplorerSummary> snapshot() = 0;
 };
 
 }  // namespace tessera

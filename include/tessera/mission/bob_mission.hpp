@@ -27,6 +27,7 @@
 //    cell is taken as free for this one sensing; nothing else changes).
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,6 +54,8 @@ enum class BobVariant {
 
 /// "trail" / "map-aware".
 [[nodiscard]] const char* bob_variant_name(BobVariant v);
+
+struct BobResult;
 
 struct BobMissionOptions {
   BobVariant variant = BobVariant::kTrail;
@@ -84,6 +87,10 @@ struct BobMissionOptions {
   double robot_length_m = 0.16;
   double robot_width_m = 0.15;
   int samples_per_move = 12;
+  /// Called with the run so far at the start and after every step (a move or a bump): route,
+  /// size, start, final_map and sensed from the explorer's maps (BobExplorerPort::snapshot); row
+  /// and localisation are left empty. For a monitor (io/bob_monitor.hpp); unset: not called.
+  std::function<void(const BobResult&)> on_step;
 };
 
 /// BOBMapping Table 1 for one configuration, plus the comparison with the SmartDFS bound.

@@ -72,15 +72,18 @@ World labyrinth(double resolution_m) {
 
 // BOBMapping 4.2: "a laboratory room ... obstacles simulated using expanded polystyrene barriers",
 // mapped on an 11 x 14 grid of 22 cm cells. The paper's figures are not in its text, so the
-// barriers are drawn here: an L, a box, a T and a board, placed off the cell lines. 2.40 x 3.05 m,
-// which the robot's grid covers with 11 x 14 cells.
+// barriers are drawn here: an L, a box, a T and a board, placed off the cell lines. 2.42 x 3.08 m,
+// exactly the 11 x 14 cells, drawn at the coarsest resolution no coarser than asked that divides
+// the 22 cm cell (0.044 m when 0.05 m is asked), so that the grid covers the arena exactly.
 std::vector<Box> arena_barriers() {
   return {{0.50, 1.90, 0.55, 2.60}, {0.50, 2.55, 1.20, 2.60}, {1.55, 1.95, 1.90, 2.30},
           {1.10, 0.95, 1.70, 1.00}, {1.35, 1.00, 1.40, 1.30}, {0.45, 0.50, 0.90, 0.55}};
 }
-constexpr double kArenaW = 2.40, kArenaH = 3.05, kBoardT = 0.03;
+constexpr double kArenaCellM = 0.22, kArenaW = 11 * kArenaCellM, kArenaH = 14 * kArenaCellM;
+constexpr double kBoardT = 0.03;
 
-World bob_arena(double resolution_m, bool closed) {
+World bob_arena(double asked_resolution_m, bool closed) {
+  const double resolution_m = kArenaCellM / std::ceil(kArenaCellM / asked_resolution_m - 1e-9);
   std::vector<Box> boxes = arena_barriers();
   if (closed) {
     boxes.push_back({0, 0, kArenaW, kBoardT});

@@ -198,10 +198,21 @@ BobCommand::BobCommand(CLI::App& app) {
 int BobCommand::run() const {
   Result<World> loaded = load_world(world_, kBuiltinResolutionM);
   if (!loaded) return report_error(loaded.error());
-  const World world = std::move(loaded).value();
+  const World cropped = std::move(loaded).value();
   const std::string world_name = world_.file ? world_.file->string() : "builtin:" + world_.builtin;
   // The robot's grid, as run_bob lays it over the world.
-  const GridGeometry cells = world.resampled(cell_m_).geometry();
+  const GridGeometry cells = cropped.resampled(cell_m_).geometry();
+  // With --crop the grid covers the rectangle and the sensors see the whole floor plan around it
+  // (BobMissionOptions::grid_rect_m): an open configuration has no wall on the grid's edge.
+  World whole;
+  if (world_.crop) {
+    WorldSource uncropped = world_;
+    uncropped.crop.reset();
+    Result<World> w = load_world(uncropped, kBuiltinResolutionM);
+    if (!w) return report_error(w.error());
+    whole = std::move(w).value();
+  }
+  const World& world = world_.crop ? whole : cropped;
 
   BobMissionOptions options;
   options.variant = variant_ == "map-aware" ? BobVariant::kMapAware : BobVariant::kTrail;
@@ -210,6 +221,11 @@ int BobCommand::run() const {
   options.seed = seed_;
   options.cell_m = cell_m_;
   options.perfect_localisation = localisation_ == "perfect";
+  if (world_.crop) {
+    const GridGeometry& c = cropped.geometry();
+    options.grid_rect_m = std::array<Vec2, 2>{
+        c.origin(), c.origin() + Vec2{c.width() * c.resolution_m(), c.height() * c.resolution_m()}};
+  }
   if (start_) {
     Result<Vec2> p = parse_point(*start_, "--start");
     if (!p) return report_error(p.error());

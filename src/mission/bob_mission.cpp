@@ -121,6 +121,22 @@ double free_travel(const World& world, const Pose2& T, double distance_m, double
   return distance_m;
 }
 
+/// The robot's grid over `world` (or over options.grid_rect_m of it) and the ground truth of each
+/// of its cells: occupied when any solid cell of `world` overlaps it (World::resampled's rule; a
+/// cell reaching past the rectangle looks at the world there, not at the rectangle's edge).
+World robot_grid_truth(const World& world, const BobMissionOptions& options) {
+  if (!options.grid_rect_m) return world.resampled(options.cell_m);
+  const World rect = world.cropped((*options.grid_rect_m)[0], (*options.grid_rect_m)[1]);
+  const GridGeometry g = rect.resampled(options.cell_m).geometry();
+  std::vector<std::uint8_t> solid(g.size(), 0);
+  const Vec2 half{0.5 * options.cell_m, 0.5 * options.cell_m};
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const Vec2 centre = g.center_of(g.cell_of(i));
+    solid[i] = world.any_solid_in(centre - half, centre + half) ? 1 : 0;
+  }
+  return World(g, std::move(solid), world.name());
+}
+
 BeaconOptions default_beacons(const GridGeometry& g) {
   constexpr double kInsetM = 0.2;
   constexpr double kCeilingM = 2.5;
@@ -212,7 +228,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
                        metres_text(options.robot_width_m) + " m)");
   }
   // The robot's grid and the ground truth of each of its cells.
-  const World truth = world.resampled(options.cell_m);
+  const World truth = robot_grid_truth(world, options);
   const GridGeometry& g = truth.geometry();
   const long long n_cells = static_cast<long long>(g.width()) * g.height();
   if (n_cells > kMaxBobCells) {

@@ -162,6 +162,27 @@ TEST(BobMission, ReSensingOffLeavesMoreCellsWrong) {
   }
 }
 
+// An open configuration (BOBMapping 4.3): the grid covers part of an open floor. With the floor
+// around the grid there for the sensors (grid_rect_m), no cell on the grid's edge is read
+// occupied; cut out of the floor (World::cropped, solid outside), the edge reads as a wall on the
+// cells' outer faces, which sensor noise puts inside them.
+TEST(BobMission, AnOpenGridSeesTheFloorBeyondItsEdgeNotAWall) {
+  const std::vector<std::string> floor(20, std::string(20, '.'));
+  const World world = text_world(floor);
+  const Vec2 lo{1.1, 1.1};
+  const Vec2 hi{3.3, 3.3};
+  BobMissionOptions o;
+  o.grid_rect_m = std::array<Vec2, 2>{lo, hi};
+  const Result<BobResult> open = run_bob(world, o);
+  o.grid_rect_m.reset();
+  const Result<BobResult> cut = run_bob(world.cropped(lo, hi), o);
+  ASSERT_TRUE(open.ok() && cut.ok());
+  EXPECT_EQ(open->width, 10);
+  EXPECT_EQ(open->row.empty_as_occupied_strict, 0);
+  EXPECT_EQ(open->row.occupied_as_empty_strict, 0);
+  EXPECT_GT(cut->row.empty_as_occupied_strict, 0);
+}
+
 TEST(BobMission, MapAwareIsNeverLongerThanTrail) {
   for (const auto& rows : worlds()) {
     Cell start;

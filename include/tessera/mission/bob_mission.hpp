@@ -25,6 +25,7 @@
 //  - At the start the robot is placed by hand (belief = truth) centred in its cell, facing North,
 //    and senses the three cells around it as if it had just driven in from the cell behind (that
 //    cell is taken as free for this one sensing; nothing else changes).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -79,6 +80,12 @@ struct BobMissionOptions {
   /// Table 1 scoring band (BobTableRow): an obstacle this close to a cell edge may be mapped in
   /// either cell without counting as an error. Below the beacons' 3.5 cm mean error.
   double boundary_tolerance_m = 0.03;
+  /// The robot's grid covers only this rectangle {lo, hi} of the world, metres (snapped outwards
+  /// to the world's cells, as World::cropped does); the world outside it is still there for the
+  /// sensors and the body. An open configuration cut from a floor plan ("the limit of the space is
+  /// limited by the grid size", BOBMapping 4.3) then sees the floor plan beyond the grid's edge,
+  /// as the paper's robot saw the room, instead of a wall on the edge. Default: the whole world.
+  std::optional<std::array<Vec2, 2>> grid_rect_m;
   /// Start cell of the robot's grid, facing North. Default: in the largest 4-connected free area,
   /// the first cell in row-major order (lowest row, then lowest column) whose eight neighbours
   /// are free, or failing that whose North neighbour is free.

@@ -1,5 +1,6 @@
 #include "tessera/sim/builtin_world.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -71,28 +72,32 @@ World labyrinth(double resolution_m) {
 }
 
 // BOBMapping 4.2: "a laboratory room ... obstacles simulated using expanded polystyrene barriers",
-// mapped on an 11 x 14 grid of 22 cm cells. The paper's figures are not in its text, so the
-// barriers are drawn here: an L, a box, a T and a board, placed off the cell lines. 2.42 x 3.08 m,
-// exactly the 11 x 14 cells, drawn at the coarsest resolution no coarser than asked that divides
-// the 22 cm cell (0.044 m when 0.05 m is asked), so that the grid covers the arena exactly.
-std::vector<Box> arena_barriers() {
-  return {{0.50, 1.90, 0.55, 2.60}, {0.50, 2.55, 1.20, 2.60}, {1.55, 1.95, 1.90, 2.30},
-          {1.10, 0.95, 1.70, 1.00}, {1.35, 1.00, 1.40, 1.30}, {0.45, 0.50, 0.90, 0.55}};
-}
+// mapped on an 11 x 14 grid of 22 cm cells (2.42 x 3.08 m). The paper's figures are not in its
+// text, so the barriers are drawn here: an L, a box, a T and a board, every face at least 5 cm
+// from the cell lines. Drawn at 0.22 / n m with n >= 20 (1.1 cm or finer), so that the grid's
+// cells are whole numbers of the world's. Closed: 3 cm boards on the arena's edge. Open: the same
+// barriers on an open floor 0.44 m (two cells) wider all round, to be cropped to the arena
+// (--crop 0.44,0.44,2.86,3.52) so that the sensors see open floor beyond the grid's edge.
 constexpr double kArenaCellM = 0.22, kArenaW = 11 * kArenaCellM, kArenaH = 14 * kArenaCellM;
-constexpr double kBoardT = 0.03;
+constexpr double kBoardT = 0.03, kOpenMarginM = 2 * kArenaCellM;
 
 World bob_arena(double asked_resolution_m, bool closed) {
-  const double resolution_m = kArenaCellM / std::ceil(kArenaCellM / asked_resolution_m - 1e-9);
-  std::vector<Box> boxes = arena_barriers();
+  const double n = std::max(20.0, std::ceil(kArenaCellM / asked_resolution_m - 1e-9));
+  const double resolution_m = kArenaCellM / n;
+  std::vector<Box> boxes = {{0.50, 1.85, 0.55, 2.50}, {0.50, 2.48, 1.25, 2.53},
+                            {1.60, 2.05, 1.92, 2.35}, {1.15, 0.95, 1.70, 1.00},
+                            {1.40, 1.00, 1.45, 1.25}, {0.50, 0.50, 0.80, 0.55}};
   if (closed) {
     boxes.push_back({0, 0, kArenaW, kBoardT});
     boxes.push_back({0, kArenaH - kBoardT, kArenaW, kArenaH});
     boxes.push_back({0, 0, kBoardT, kArenaH});
     boxes.push_back({kArenaW - kBoardT, 0, kArenaW, kArenaH});
+    return rasterize_boxes(boxes, kArenaW, kArenaH, resolution_m, "builtin:bob-arena");
   }
-  return rasterize_boxes(boxes, kArenaW, kArenaH, resolution_m,
-                         closed ? "builtin:bob-arena" : "builtin:bob-arena-open");
+  for (Box& b : boxes) b = {b.x0 + kOpenMarginM, b.y0 + kOpenMarginM, b.x1 + kOpenMarginM,
+                            b.y1 + kOpenMarginM};
+  return rasterize_boxes(boxes, kArenaW + 2 * kOpenMarginM, kArenaH + 2 * kOpenMarginM,
+                         resolution_m, "builtin:bob-arena-open");
 }
 
 }  // namespace

@@ -183,6 +183,32 @@ TEST(BobMission, AnOpenGridSeesTheFloorBeyondItsEdgeNotAWall) {
   EXPECT_GT(cut->row.empty_as_occupied_strict, 0);
 }
 
+// The paper-like arena (BOBMapping 4.2): 11 x 14 cells of 0.22 m, closed or open (cut to the grid
+// from its open floor), mapped exactly without noise and with no occupied cell read empty with it.
+TEST(BobMission, TheElevenByFourteenArenaIsMappedRightInBothVariants) {
+  for (const char* name : {"bob-arena", "bob-arena-open"}) {
+    const World world = builtin_world(name, 0.05);
+    BobMissionOptions o;
+    if (std::string(name) == "bob-arena-open") {
+      o.grid_rect_m = std::array<Vec2, 2>{Vec2{0.44, 0.44}, Vec2{2.86, 3.52}};
+    }
+    for (const BobVariant v : {BobVariant::kTrail, BobVariant::kMapAware}) {
+      SCOPED_TRACE(std::string(name) + " " + bob_variant_name(v));
+      o.variant = v;
+      o.noise = false;
+      const Result<BobResult> exact = run_bob(world, o);
+      ASSERT_TRUE(exact.ok()) << exact.error().message;
+      EXPECT_EQ(exact->width, 11);
+      EXPECT_EQ(exact->height, 14);
+      EXPECT_EQ(exact->row.empty_as_occupied_strict + exact->row.occupied_as_empty_strict, 0);
+      o.noise = true;
+      const Result<BobResult> noisy = run_bob(world, o);
+      ASSERT_TRUE(noisy.ok()) << noisy.error().message;
+      EXPECT_EQ(noisy->row.occupied_as_empty_strict, 0);
+    }
+  }
+}
+
 TEST(BobMission, MapAwareIsNeverLongerThanTrail) {
   for (const auto& rows : worlds()) {
     Cell start;

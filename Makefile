@@ -26,7 +26,7 @@ demo: cli
 	$(TESSERA) explore --out $(DEMO_OUT)
 
 ifeq ($(CI),true)
-test: test-ci test-sanitize bob-firmware
+test: test-ci test-sanitize bob-firmware bob-firmware-test
 else
 test: test-dev
 endif
@@ -62,3 +62,12 @@ clean:
 bob-firmware: deps
 	cmake --preset cortex-m
 	cmake --build --preset cortex-m -j $(JOBS)
+
+# The firmware images on an emulated Cortex-M4 (QEMU mps2-an386), fed by the host simulator over
+# the serial port: their final maps must be the host build's (scripts/bob_firmware_test.sh).
+# Uses the ci build's tessera when there is one (make test), the dev build's otherwise.
+.PHONY: bob-firmware-test
+bob-firmware-test: bob-firmware
+	@if [ -x build/ci/apps/tessera/tessera ]; then t=build/ci/apps/tessera/tessera; else \
+	  cmake --preset dev && cmake --build --preset dev -j $(JOBS) --target tessera && t=$(TESSERA); fi; \
+	bash scripts/bob_firmware_test.sh $$t build/cortex-m/firmware/bob

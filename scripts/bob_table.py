@@ -8,7 +8,7 @@ Every world keeps its own resolution (0.011 to 0.25 m), finer than or out of ste
 floor plan; the robot's grid starts at its lower-left corner. "closed" means walls enclose the
 space, "open" that the rectangle cuts through free space and its edge bounds the exploration.
 
-usage: scripts/bob_table.py [--tessera build/dev/apps/tessera/tessera] [--noise on|off]
+usage: scripts/bob_table.py [--tessera build/dev/apps/tessera/tessera] [--noise on|off] [--resense on|off]
                             [--localisation beacons|perfect] [--seed 1] [--out out/bob_table]
 """
 import argparse
@@ -50,6 +50,7 @@ VARIANTS = ["trail", "map-aware"]
 
 def run(tessera, world_args, variant, args, out):
     cmd = [tessera, "bob", *world_args, "--variant", variant, "--noise", args.noise,
+           "--resense", args.resense,
            "--localisation", args.localisation, "--seed", str(args.seed), "--quiet", "--out",
            str(out)]
     done = subprocess.run(cmd, capture_output=True, text=True)
@@ -103,6 +104,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--tessera", default=str(ROOT / "build" / "dev" / "apps" / "tessera" / "tessera"))
     ap.add_argument("--noise", default="on", choices=["on", "off"])
+    ap.add_argument("--resense", default="on", choices=["on", "off"])
     ap.add_argument("--localisation", default="beacons", choices=["beacons", "perfect"])
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--out", default=str(ROOT / "out" / "bob_table"))
@@ -115,8 +117,8 @@ def main():
     for b in BUILTIN:
         worlds.append(("built-in %s (0.05 m)" % b, ["--builtin", b]))
 
-    print("BOBMapping Table 1 from `tessera bob` (noise %s, localisation %s, seed %d, cell 0.22 m)."
-          % (args.noise, args.localisation, args.seed))
+    print("BOBMapping Table 1 from `tessera bob` (noise %s, re-sensing %s, localisation %s, seed %d, "
+          "cell 0.22 m)." % (args.noise, args.resense, args.localisation, args.seed))
     for variant in VARIANTS:
         rows = []
         for i, (label, world_args) in enumerate(worlds):

@@ -13,6 +13,8 @@ packages=(
   # The C++ headers for arm-none-eabi (<cstddef>, <cstdint>, ...): only a Recommends of
   # gcc-arm-none-eabi, so --no-install-recommends leaves them out and make bob-firmware fails.
   libstdc++-arm-none-eabi-dev
+  # make bob-firmware-test runs the firmware on an emulated Cortex-M4 (the MPS2 AN386 board).
+  qemu-system-arm
 )
 
 missing=()

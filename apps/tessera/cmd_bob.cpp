@@ -1,12 +1,23 @@
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <cstring>
 #include <numbers>
+#include <optional>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "commands.hpp"
 #include "tessera/io/atomic_file.hpp"
+#include "tessera/io/bob_firmware_link.hpp"
 #include "tessera/io/bob_map_file.hpp"
 #include "tessera/io/bob_monitor.hpp"
 #include "tessera/io/image_file.hpp"
@@ -19,6 +30,70 @@ namespace {
 // Built-in worlds are drawn at this resolution, finer than the robot's cells, so that their
 // obstacles straddle cell boundaries as real ones do.
 constexpr double kBuiltinResolutionM = 0.05;
+
+/// QEMU running the firmware on an emulated MPS2 AN386 (Cortex-M4), its UART0 connected to
+/// 127.0.0.1:port. Stopped (SIGTERM, then SIGKILL) when this goes out of scope, whatever happened.
+class Emulator {
+ public:
+  Emulator() = default;
+  Emulator(const Emulator&) = delete;
+  Emulator& operator=(const Emulator&) = delete;
+  ~Emulator() { stop(); }
+
+  Result<bool> start(const std::string& qemu, const std::string& elf, int port) {
+    std::vector<std::string> args = {qemu,
+                                     "-M",
+                                     "mps2-an386",
+                                     "-display",
+                                     "none",
+                                     "-monitor",
+                                     "none",
+                                     "-serial",
+                                     "tcp:127.0.0.1:" + std::to_string(port),
+                                     "-semihosting-config",
+                                     "enable=on,target=native",
+                                     "-kernel",
+                                     elf};
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const pid_t parent = ::getpid();
+    pid_ = ::fork();
+    if (pid_ < 0) return runtime_error(std::string("cannot start ") + qemu + ": fork failed");
+    if (pid_ == 0) {
+      // The emulator dies with this process, even if it is killed (a timeout in a test).
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (::getppid() != parent) ::_exit(127);
+      const int null_fd = ::open("/dev/null", O_RDWR);
+      if (null_fd >= 0) {
+        ::dup2(null_fd, 0);
+        ::dup2(null_fd, 1);
+      }
+      ::execvp(argv[0], argv.data());
+      ::_exit(127);
+    }
+    return true;
+  }
+
+  void stop() {
+    if (pid_ <= 0) return;
+    ::kill(pid_, SIGTERM);
+    int status = 0;
+    for (int i = 0; i < 50; ++i) {  // up to 1 s, then SIGKILL
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1;
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ::kill(pid_, SIGKILL);
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+  }
+
+ private:
+  pid_t pid_ = -1;
+};
 
 const char* stop_reason_name(bob::StopReason r) {
   switch (r) {
@@ -38,6 +113,7 @@ nlohmann::json row_json(const BobTableRow& r) {
   return {{"cells", r.cells},
           {"sensed_cells", r.sensed_cells},
           {"resensed_cells", r.resensed},
+          {"ignored_readings", r.ignored_readings},
           {"empty_as_occupied", r.empty_as_occupied},
           {"occupied_as_empty", r.occupied_as_empty},
           {"success_rate", r.success_rate},
@@ -87,6 +163,11 @@ BobCommand::BobCommand(CLI::App& app) {
   sub_->add_option("--noise", noise_, "Noise of the IR sensors, encoders and beacons: on or off")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  sub_->add_option("--resense", resense_,
+                   "BOBMapping 3.4 re-sensing: on (a later reading changes a sensed cell) or off "
+                   "(the first reading of a cell stays)")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
   sub_->add_option("--localisation", localisation_,
                    "beacons (encoders between ultrasonic fixes, BOBMapping 3.3) or perfect "
                    "(exact motion, the true pose known)")
@@ -97,6 +178,19 @@ BobCommand::BobCommand(CLI::App& app) {
                    "Start X,Y in metres: the robot starts in the cell holding it, facing North, "
                    "whose cell must be free. Default: in the largest free area, the first cell "
                    "with a free cell North of it");
+  sub_->add_option("--firmware", firmware_,
+                   "Run the explorer as this firmware image (firmware/bob, make bob-firmware) on "
+                   "an emulated Cortex-M4 (QEMU mps2-an386) fed by this simulator over its serial "
+                   "port; the run fails unless its final map and route are the host build's")
+      ->check(CLI::ExistingFile);
+  sub_->add_option("--qemu", qemu_, "QEMU for --firmware")->capture_default_str();
+  sub_->add_option("--firmware-timeout", firmware_timeout_s_,
+                   "Seconds --firmware waits for any one answer of the firmware")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  sub_->add_option("--monitor-dir", monitor_dir_,
+                   "Write the monitor picture (map and route so far) after every step as "
+                   "step_NNNNN.png in this folder");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
   sub_->add_flag("--quiet", quiet_, "No summary");
 }
@@ -104,30 +198,106 @@ BobCommand::BobCommand(CLI::App& app) {
 int BobCommand::run() const {
   Result<World> loaded = load_world(world_, kBuiltinResolutionM);
   if (!loaded) return report_error(loaded.error());
-  const World world = std::move(loaded).value();
+  const World cropped = std::move(loaded).value();
   const std::string world_name = world_.file ? world_.file->string() : "builtin:" + world_.builtin;
   // The robot's grid, as run_bob lays it over the world.
-  const GridGeometry cells = world.resampled(cell_m_).geometry();
+  const GridGeometry cells = cropped.resampled(cell_m_).geometry();
+  // With --crop the grid covers the rectangle and the sensors see the whole floor plan around it
+  // (BobMissionOptions::grid_rect_m): an open configuration has no wall on the grid's edge.
+  World whole;
+  if (world_.crop) {
+    WorldSource uncropped = world_;
+    uncropped.crop.reset();
+    Result<World> w = load_world(uncropped, kBuiltinResolutionM);
+    if (!w) return report_error(w.error());
+    whole = std::move(w).value();
+  }
+  const World& world = world_.crop ? whole : cropped;
 
   BobMissionOptions options;
   options.variant = variant_ == "map-aware" ? BobVariant::kMapAware : BobVariant::kTrail;
   options.noise = noise_ == "on";
+  options.resense = resense_ == "on";
   options.seed = seed_;
   options.cell_m = cell_m_;
   options.perfect_localisation = localisation_ == "perfect";
+  if (world_.crop) {
+    const GridGeometry& c = cropped.geometry();
+    options.grid_rect_m = std::array<Vec2, 2>{
+        c.origin(), c.origin() + Vec2{c.width() * c.resolution_m(), c.height() * c.resolution_m()}};
+  }
   if (start_) {
     Result<Vec2> p = parse_point(*start_, "--start");
     if (!p) return report_error(p.error());
     options.start = cells.cell_at_unchecked(*p);
   }
 
+  // --monitor-dir: a picture of the robot's map and route after every step (BOBMapping Figure 5a's
+  // monitor), from the firmware's own stream with --firmware.
+  Status monitor_status = Ok{};
+  int frame = 0;
+  if (monitor_dir_) {
+    if (Status s = ensure_directory(*monitor_dir_); !s) return report_error(s.error());
+    options.on_step = [&](const BobResult& so_far) {
+      if (!monitor_status) return;
+      Result<std::string> png = encode_png(render_bob_monitor(so_far));
+      if (!png) {
+        monitor_status = png.error();
+        return;
+      }
+      monitor_status =
+          write_file_atomic(*monitor_dir_ / fmt::format("step_{:05d}.png", frame++), *png);
+    };
+  }
+  // --firmware: the explorer runs as firmware on the emulated board; the host build's own run of
+  // the same world and seed must give the same final map, byte for byte.
+  std::optional<Result<BobResult>> firmware_result;
+  Emulator emulator;
+  if (firmware_) {
+    Result<std::unique_ptr<BobFirmwareLink>> link =
+        BobFirmwareLink::listen(std::chrono::milliseconds(
+            static_cast<long long>(std::lround(firmware_timeout_s_ * 1000.0))));
+    if (!link) return report_error(link.error());
+    if (Result<bool> up = emulator.start(qemu_, firmware_->string(), (*link)->port()); !up) {
+      return report_error(up.error());
+    }
+    if (Result<bool> ok = (*link)->accept(); !ok) {
+      return report_error(runtime_error(qemu_ + " -M mps2-an386 -kernel " + firmware_->string() +
+                                        ": " + ok.error().message));
+    }
+    const bob::ExplorerOptions fw = (*link)->firmware_options();
+    const bool fw_map_aware = fw.backtrack == bob::Backtrack::kShortestKnownPath;
+    if (fw_map_aware != (options.variant == BobVariant::kMapAware) ||
+        fw.resense != options.resense) {
+      return report_error(usage_error(
+          firmware_->string() + ": the firmware runs the " + (fw_map_aware ? "map-aware" : "trail") +
+          " variant with re-sensing " + (fw.resense ? "on" : "off") + "; pass the same --variant "
+          "and --resense"));
+    }
+    firmware_result = run_bob(world, options, **link);
+    emulator.stop();
+    if (!*firmware_result) return report_error(firmware_result->error());
+    options.on_step = nullptr;  // the monitor shows the firmware's run
+  }
   Result<BobResult> result = run_bob(world, options);
+  if (!monitor_status) return report_error(monitor_status.error());
   if (!result) {
     Error e = result.error();
     if (e.kind == ErrorKind::kInput) e.message = world_name + ": " + e.message;
     return report_error(e);
   }
-  const BobResult& r = *result;
+  if (firmware_result) {
+    const BobResult& f = **firmware_result;
+    if (f.final_map != result->final_map || f.route != result->route) {
+      return report_error(runtime_error(
+          "the firmware's run differs from the host's: final map " +
+          std::string(f.final_map == result->final_map ? "identical" : "different") + ", route " +
+          (f.route == result->route ? "identical" : "different") + " (" +
+          std::to_string(f.route.size()) + " vs " + std::to_string(result->route.size()) +
+          " cells)"));
+    }
+  }
+  const BobResult& r = firmware_result ? **firmware_result : *result;
 
   BobMapFile map_file;
   map_file.width = r.width;
@@ -145,6 +315,7 @@ int BobCommand::run() const {
                             {{"cell_m", cell_m_},
                              {"variant", variant_},
                              {"noise", noise_},
+                             {"resense", resense_},
                              {"start", {r.start.x, r.start.y}},
                              {"localisation", localisation_}}},
                            {"world",
@@ -156,6 +327,12 @@ int BobCommand::run() const {
                            {"localisation", localisation_json(r.localisation)}};
   report["bob"]["stop_reason"] = stop_reason_name(r.stop_reason);
   report["bob"]["variant"] = variant_;
+  if (firmware_) {
+    report["firmware"] = {{"elf", firmware_->string()},
+                          {"board", "mps2-an386 (QEMU)"},
+                          {"final_map_identical_to_host", true},
+                          {"route_identical_to_host", true}};
+  }
   const std::string json = encode_json(report);
 
   if (Status s = ensure_directory(out_); !s) return report_error(s.error());
@@ -173,6 +350,10 @@ int BobCommand::run() const {
     const BobLocalisationStats& l = r.localisation;
     fmt::print("localisation: {}, {} fixes, {} repositionings, {} bumps, worst error {:.3f} m\n",
                localisation_, l.fixes, l.repositionings, l.bumps, l.max_position_error_m);
+    if (firmware_) {
+      fmt::print("firmware: {} on mps2-an386, final map and route identical to the host's\n",
+                 firmware_->string());
+    }
     fmt::print("outputs: {}/monitor.png map.bob report.json\n", out_.string());
   }
   return kExitOk;

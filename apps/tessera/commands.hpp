@@ -97,11 +97,16 @@ class BobCommand : public Command {
   double cell_m_ = 0.22;
   std::string variant_ = "trail";
   std::string noise_ = "on";
+  std::string resense_ = "on";
   std::string localisation_ = "beacons";
   std::uint64_t seed_ = 1;
   std::optional<std::string> start_;
   std::filesystem::path out_ = "out/bob";
   bool quiet_ = false;
+  std::optional<std::filesystem::path> firmware_;
+  std::optional<std::filesystem::path> monitor_dir_;
+  std::string qemu_ = "qemu-system-arm";
+  double firmware_timeout_s_ = 20.0;
 };
 
 /// tessera eval relations | ate: scores a trajectory against ground-truth relations (Kummerle et

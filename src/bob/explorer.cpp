@@ -76,6 +76,10 @@ Status Explorer::sense(GridCell c, bool occupied) {
   if (!initialised_) return Status::kNotStarted;
   if (!map_.contains(c)) return Status::kOutOfBounds;
   const CellState reading = occupied ? CellState::kOccupied : CellState::kFree;
+  if (!options_.resense && map_.state(c) != CellState::kUnsensed) {
+    ++ignored_;  // re-sensing off: the first reading stays
+    return Status::kOk;
+  }
   switch (map_.state(c)) {
     case CellState::kUnsensed:
       --unsensed_;
@@ -98,6 +102,20 @@ Status Explorer::sense(GridCell c, bool occupied) {
       break;
   }
   return Status::kOk;
+}
+
+Status Explorer::report_target(GridCell c, bool occupied) {
+  if (!initialised_) return Status::kNotStarted;
+  if (!map_.contains(c)) return Status::kOutOfBounds;
+  if (occupied && map_.state(c) == CellState::kVisited) return Status::kOk;
+  return sense(c, occupied);
+}
+
+Status Explorer::report_detection(GridCell c) {
+  if (!initialised_) return Status::kNotStarted;
+  if (!map_.contains(c)) return Status::kOutOfBounds;
+  if (map_.state(c) == CellState::kUnsensed) return Status::kOk;
+  return sense(c, true);
 }
 
 Status Explorer::start(GridCell cell, Direction heading) {

@@ -82,4 +82,23 @@ Result<BobMapFile> read_bob_map(const std::filesystem::path& path) {
   return decode_bob_map(*bytes, path.string());
 }
 
+Result<OccupancyGrid> bob_map_to_grid(const BobMapFile& map, const std::string& name) {
+  if (map.cell_mm <= 0) return input_error(name + ": cell side 0 mm, expected > 0");
+  const std::size_t row_bytes = (static_cast<std::size_t>(map.width) + 7u) / 8u;
+  if (map.width < 1 || map.height < 1 ||
+      map.rows.size() != row_bytes * static_cast<std::size_t>(map.height)) {
+    return input_error(name + ": map rows do not match its " + std::to_string(map.width) + " x " +
+                       std::to_string(map.height) + " cells");
+  }
+  OccupancyGrid grid(GridGeometry({0.0, 0.0}, map.cell_mm / 1000.0, map.width, map.height));
+  for (int y = 0; y < map.height; ++y) {
+    for (int x = 0; x < map.width; ++x) {
+      const std::uint8_t byte =
+          map.rows[static_cast<std::size_t>(y) * row_bytes + static_cast<std::size_t>(x) / 8u];
+      grid.set_probability({x, y}, ((byte >> (x % 8)) & 1u) != 0 ? 1.0 : 0.0);
+    }
+  }
+  return grid;
+}
+
 }  // namespace tessera

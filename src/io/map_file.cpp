@@ -4,6 +4,7 @@
 #include <system_error>
 
 #include "internal/file_util.hpp"
+#include "tessera/io/bob_map_file.hpp"
 #include "tessera/io/houseexpo.hpp"
 #include "tessera/io/image_map.hpp"
 #include "tessera/io/map_yaml.hpp"
@@ -31,6 +32,11 @@ Result<LoadedMap> load_map(const std::filesystem::path& path, const MapLoadOptio
   const std::string ext = io_internal::lower_extension(path);
   if (ext == ".yaml" || ext == ".yml") return tagged(read_map_yaml(path), "ros_map_server");
   if (ext == ".world") return tagged(read_stage_world(path), "stage");
+  if (ext == ".bob") {  // tessera bob's map.bob (bob_map_file.hpp)
+    Result<BobMapFile> bob = read_bob_map(path);
+    if (!bob) return bob.error();
+    return tagged(bob_map_to_grid(*bob, name), "bob");
+  }
   if (ext == ".map") {
     return tagged(read_movingai_map(path, options.resolution_m.value_or(1.0)), "movingai");
   }
@@ -47,7 +53,7 @@ Result<LoadedMap> load_map(const std::filesystem::path& path, const MapLoadOptio
   }
   return input_error(name + ": unknown map format '" + (ext.empty() ? std::string("(none)") : ext) +
                      "' (supported: .yaml/.yml ROS map_server, .png/.pgm image, .map Moving AI, "
-                     ".world Stage, .json HouseExpo)");
+                     ".world Stage, .json HouseExpo, .bob BOBMapping)");
 }
 
 }  // namespace tessera

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "internal/bob_body.hpp"
+#include "tessera/mission/bob_explorer_port.hpp"
 #include "tessera/bob/final_map.hpp"
 #include "tessera/bob/packed_map.hpp"
 #include "tessera/core/angle.hpp"
@@ -120,6 +121,22 @@ double free_travel(const World& world, const Pose2& T, double distance_m, double
   return distance_m;
 }
 
+/// The robot's grid over `world` (or over options.grid_rect_m of it) and the ground truth of each
+/// of its cells: occupied when any solid cell of `world` overlaps it (World::resampled's rule; a
+/// cell reaching past the rectangle looks at the world there, not at the rectangle's edge).
+World robot_grid_truth(const World& world, const BobMissionOptions& options) {
+  if (!options.grid_rect_m) return world.resampled(options.cell_m);
+  const World rect = world.cropped((*options.grid_rect_m)[0], (*options.grid_rect_m)[1]);
+  const GridGeometry g = rect.resampled(options.cell_m).geometry();
+  std::vector<std::uint8_t> solid(g.size(), 0);
+  const Vec2 half{0.5 * options.cell_m, 0.5 * options.cell_m};
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const Vec2 centre = g.center_of(g.cell_of(i));
+    solid[i] = world.any_solid_in(centre - half, centre + half) ? 1 : 0;
+  }
+  return World(g, std::move(solid), world.name());
+}
+
 BeaconOptions default_beacons(const GridGeometry& g) {
   constexpr double kInsetM = 0.2;
   constexpr double kCeilingM = 2.5;
@@ -131,32 +148,47 @@ BeaconOptions default_beacons(const GridGeometry& g) {
   return b;
 }
 
-bool visited(const bob::Explorer& explorer, Cell c) {
-  return explorer.map().contains(to_grid(c)) &&
-         explorer.map().state(to_grid(c)) == bob::CellState::kVisited;
-}
+/// The explorer in this process, in the robot's fixed buffers.
+class LocalExplorerPort final : public BobExplorerPort {
+ public:
+  Result<bob::Status> begin(const bob::ExplorerOptions& options, int width, int height) override {
+    return explorer_.init(options, buffers_->map.data(), buffers_->map.size(),
+                          buffers_->final_map.data(), buffers_->final_map.size(), width, height);
+  }
+  Result<bob::Status> report(const StepSensing& s) override {
+    // kOutOfBounds past the grid's edge: ignored.
+    for (const CellDetection* d : {&s.left, &s.front, &s.right}) {
+      if (d->seen) (void)explorer_.report_target(to_grid(d->cell), d->occupied);
+    }
+    for (const Cell c : s.also_occupied) (void)explorer_.report_detection(to_grid(c));
+    return bob::Status::kOk;
+  }
+  Result<bob::Status> start(Cell cell) override {
+    return explorer_.start(to_grid(cell), bob::Direction::kNorth);
+  }
+  Result<bob::Status> next_move(bob::Direction& move) override {
+    return explorer_.next_move(move);
+  }
+  Result<bob::Status> blocked() override { return explorer_.blocked(); }
+  Result<BobExplorerSummary> snapshot() override { return summary(); }
+  Result<BobExplorerSummary> summary() override {
+    BobExplorerSummary out;
+    out.stop_reason = explorer_.stop_reason();
+    out.moves = explorer_.moves();
+    out.turns = explorer_.turns();
+    out.resensed = explorer_.resensed();
+    out.ignored_readings = explorer_.ignored_readings();
+    const bob::PackedMap& map = explorer_.map();
+    const bob::FinalMap& final_map = explorer_.final_map();
+    out.packed_map.assign(map.data(), map.data() + map.memory_bytes());
+    out.final_map.assign(final_map.data(), final_map.data() + final_map.memory_bytes());
+    return out;
+  }
 
-/// Passes one step's readings to the explorer. A target cell (B2, C3, D2) is read occupied when a
-/// reflector may lie in it (3 sigma of IR noise and pose uncertainty, BobSensingOptions): the
-/// safe side for a cell the robot has not been in, but weaker evidence than having stood in the
-/// cell, so for a visited cell, where a detection marks the final map (decision 0008), only a
-/// reading whose reflector is placed inside the cell counts (StepSensing::also_occupied). On the
-/// 13 worlds of docs/bob-results.md (seeds 1-5) the "may lie" rule put four times as many false
-/// obstacles into visited cells and found no obstacle the placed readings missed.
-void report(bob::Explorer& explorer, const StepSensing& s) {
-  // kOutOfBounds past the grid's edge: ignored.
-  for (const CellDetection* d : {&s.left, &s.front, &s.right}) {
-    if (d->seen && !(d->occupied && visited(explorer, d->cell))) {
-      (void)explorer.sense(to_grid(d->cell), d->occupied);
-    }
-  }
-  for (const Cell c : s.also_occupied) {
-    if (explorer.map().contains(to_grid(c)) &&
-        explorer.map().state(to_grid(c)) != bob::CellState::kUnsensed) {
-      (void)explorer.sense(to_grid(c), true);
-    }
-  }
-}
+ private:
+  std::unique_ptr<RobotBuffers> buffers_ = std::make_unique<RobotBuffers>();
+  bob::Explorer explorer_;
+};
 
 }  // namespace
 
@@ -165,6 +197,12 @@ const char* bob_variant_name(BobVariant v) {
 }
 
 Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) {
+  LocalExplorerPort port;
+  return run_bob(world, options, port);
+}
+
+Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
+                          BobExplorerPort& explorer) {
   if (!(options.cell_m > 0.0)) return usage_error("cell_m: must be > 0");
   BobSensingOptions sensing;
   sensing.layout.cell_m = options.cell_m;
@@ -190,7 +228,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
                        metres_text(options.robot_width_m) + " m)");
   }
   // The robot's grid and the ground truth of each of its cells.
-  const World truth = world.resampled(options.cell_m);
+  const World truth = robot_grid_truth(world, options);
   const GridGeometry& g = truth.geometry();
   const long long n_cells = static_cast<long long>(g.width()) * g.height();
   if (n_cells > kMaxBobCells) {
@@ -232,8 +270,6 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
   const bob::Backtrack backtrack = options.variant == BobVariant::kTrail
                                        ? bob::Backtrack::kTrail
                                        : bob::Backtrack::kShortestKnownPath;
-  auto buffers = std::make_unique<RobotBuffers>();
-  bob::Explorer explorer;
   Rng rng(options.seed);
   // Placed by hand in a start cell facing North, the robot senses the three cells around it as if
   // it had just driven in from behind. Section 3.4 needs the front cell free: when the sensors
@@ -243,17 +279,19 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
   bob::Status started = bob::Status::kFrontBlocked;
   for (std::size_t k = 0; k < candidates.size() && started != bob::Status::kOk; ++k) {
     start = candidates[k];
-    if (const bob::Status s =
-            explorer.init(bob::ExplorerOptions{backtrack}, buffers->map.data(), buffers->map.size(),
-                          buffers->final_map.data(), buffers->final_map.size(), g.width(),
-                          g.height());
-        s != bob::Status::kOk) {
-      return runtime_error(std::string("explorer init: ") + bob::status_name(s));
+    const Result<bob::Status> s =
+        explorer.begin(bob::ExplorerOptions{backtrack, options.resense}, g.width(), g.height());
+    if (!s) return s.error();
+    if (*s != bob::Status::kOk) {
+      return runtime_error(std::string("explorer init: ") + bob::status_name(*s));
     }
     const Cell behind = start - kNeighbors4[0];
-    report(explorer, sense_cells_while_moving(with_free_cell(world, g, behind), g,
-                                              centred_pose(g, behind, 0), sensing, rng));
-    started = explorer.start(to_grid(start), bob::Direction::kNorth);
+    const Result<bob::Status> r = explorer.report(sense_cells_while_moving(
+        with_free_cell(world, g, behind), g, centred_pose(g, behind, 0), sensing, rng));
+    if (!r) return r.error();
+    const Result<bob::Status> st = explorer.start(start);
+    if (!st) return st.error();
+    started = *st;
   }
   if (started != bob::Status::kOk) {
     if (options.start) {
@@ -269,6 +307,31 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
   out.width = g.width();
   out.height = g.height();
   out.route.push_back(start);
+  // The monitor's view of the run so far (BobMissionOptions::on_step).
+  const auto notify = [&]() -> Status {
+    if (!options.on_step) return Ok{};
+    Result<BobExplorerSummary> now = explorer.snapshot();
+    if (!now) return now.error();
+    BobResult view;
+    view.start = out.start;
+    view.width = out.width;
+    view.height = out.height;
+    view.route = out.route;
+    view.final_map = now->final_map;
+    view.sensed.assign(g.size(), 0);
+    std::vector<std::uint8_t> bytes(bob::PackedMap::bytes_needed(g.width(), g.height()));
+    bob::PackedMap map;
+    if (map.init(bytes.data(), bytes.size(), g.width(), g.height()) == bob::Status::kOk &&
+        now->packed_map.size() == bytes.size()) {
+      std::copy(now->packed_map.begin(), now->packed_map.end(), bytes.begin());
+      for (std::size_t i = 0; i < g.size(); ++i) {
+        view.sensed[i] = map.state(to_grid(g.cell_of(i))) != bob::CellState::kUnsensed ? 1 : 0;
+      }
+    }
+    options.on_step(view);
+    return Ok{};
+  };
+  if (Status s = notify(); !s) return s.error();
 
   internal::BobBody body(body_options, centred_pose(g, start, 0), rng);
   BobLocalisationStats& loc = out.localisation;
@@ -304,10 +367,11 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
                            " moves");
     }
     bob::Direction d{};
-    const bob::Status s = explorer.next_move(d);
-    if (s == bob::Status::kFinished) break;
-    if (s != bob::Status::kOk) {
-      return runtime_error(std::string("explorer: ") + bob::status_name(s));
+    const Result<bob::Status> s = explorer.next_move(d);
+    if (!s) return s.error();
+    if (*s == bob::Status::kFinished) break;
+    if (*s != bob::Status::kOk) {
+      return runtime_error(std::string("explorer: ") + bob::status_name(*s));
     }
     const Cell next = pos + kNeighbors4[static_cast<std::size_t>(static_cast<int>(d))];
     const Vec2 from_m = g.center_of(pos);
@@ -358,9 +422,12 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
       bumps_in_a_row = next == last_bumped ? bumps_in_a_row + 1 : 1;
       last_bumped = next;
       back_to(from_m);
-      if (const bob::Status b = explorer.blocked(); b != bob::Status::kOk) {
-        return runtime_error(std::string("explorer: ") + bob::status_name(b));
+      const Result<bob::Status> b = explorer.blocked();
+      if (!b) return b.error();
+      if (*b != bob::Status::kOk) {
+        return runtime_error(std::string("explorer: ") + bob::status_name(*b));
       }
+      if (Status n = notify(); !n) return n.error();
       if (!options.perfect_localisation) {
         linear_since_fix = 0;
         (void)take_fix();
@@ -368,7 +435,7 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
       continue;
     }
     bumps_in_a_row = 0;
-    report(explorer, step);
+    if (const Result<bob::Status> r = explorer.report(step); !r) return r.error();
     const Pose2& t = body.truth();
     const Pose2& b = body.belief();
     loc.max_position_error_m =
@@ -377,17 +444,33 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
         std::max(loc.max_heading_error_rad, std::abs(normalize_angle(b.theta - t.theta)));
     pos = next;
     out.route.push_back(pos);
+    if (Status n = notify(); !n) return n.error();
   }
-  out.stop_reason = explorer.stop_reason();
   if (loc.fixes > 0) loc.mean_fix_error_m = fix_error_sum_m / loc.fixes;
-
+  Result<BobExplorerSummary> summary = explorer.summary();
+  if (!summary) return summary.error();
+  BobExplorerSummary& sum = *summary;
+  out.stop_reason = sum.stop_reason;
   // The explorer kept the final map current in the robot's buffer.
-  const bob::FinalMap& final_map = explorer.final_map();
-  out.final_map.assign(final_map.data(), final_map.data() + final_map.memory_bytes());
+  std::vector<std::uint8_t> packed_bytes(bob::PackedMap::bytes_needed(g.width(), g.height()));
+  std::vector<std::uint8_t> final_bytes(bob::FinalMap::bytes_needed(g.width(), g.height()));
+  if (sum.packed_map.size() != packed_bytes.size() || sum.final_map.size() != final_bytes.size()) {
+    return runtime_error("explorer: the maps it returned are " +
+                         std::to_string(sum.packed_map.size()) + " and " +
+                         std::to_string(sum.final_map.size()) + " bytes, expected " +
+                         std::to_string(packed_bytes.size()) + " and " +
+                         std::to_string(final_bytes.size()));
+  }
+  bob::PackedMap map;
+  bob::FinalMap final_map;
+  (void)map.init(packed_bytes.data(), packed_bytes.size(), g.width(), g.height());
+  (void)final_map.init(final_bytes.data(), final_bytes.size(), g.width(), g.height());
+  std::copy(sum.packed_map.begin(), sum.packed_map.end(), packed_bytes.begin());
+  std::copy(sum.final_map.begin(), sum.final_map.end(), final_bytes.begin());
+  out.final_map = sum.final_map;
 
   // Table 1.
   BobTableRow& row = out.row;
-  const bob::PackedMap& map = explorer.map();
   row.cells = static_cast<int>(n_cells);
   out.sensed.assign(g.size(), 0);
   std::vector<std::uint8_t> visited(g.size(), 0);
@@ -419,9 +502,10 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) 
       }
     }
   }
-  row.resensed = static_cast<int>(explorer.resensed());
-  row.path_cells = static_cast<int>(explorer.moves());
-  row.turns = static_cast<int>(explorer.turns());
+  row.resensed = static_cast<int>(sum.resensed);
+  row.ignored_readings = static_cast<int>(sum.ignored_readings);
+  row.path_cells = static_cast<int>(sum.moves);
+  row.turns = static_cast<int>(sum.turns);
   row.success_rate =
       static_cast<double>(row.cells - row.empty_as_occupied - row.occupied_as_empty) / row.cells;
   row.success_rate_strict =

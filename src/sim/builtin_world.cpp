@@ -1,5 +1,6 @@
 #include "tessera/sim/builtin_world.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -70,13 +71,46 @@ World labyrinth(double resolution_m) {
   return rasterize_boxes(walls, 8.0, 8.0, resolution_m, "builtin:labyrinth");
 }
 
+// BOBMapping 4.2: "a laboratory room ... obstacles simulated using expanded polystyrene barriers",
+// mapped on an 11 x 14 grid of 22 cm cells (2.42 x 3.08 m). The paper's figures are not in its
+// text, so the barriers are drawn here: an L, a box, a T and a board, every face at least 5 cm
+// from the cell lines. Drawn at 0.22 / n m with n >= 20 (1.1 cm or finer), so that the grid's
+// cells are whole numbers of the world's. Closed: 3 cm boards on the arena's edge. Open: the same
+// barriers on an open floor 0.44 m (two cells) wider all round, to be cropped to the arena
+// (--crop 0.44,0.44,2.86,3.52) so that the sensors see open floor beyond the grid's edge.
+constexpr double kArenaCellM = 0.22, kArenaW = 11 * kArenaCellM, kArenaH = 14 * kArenaCellM;
+constexpr double kBoardT = 0.03, kOpenMarginM = 2 * kArenaCellM;
+
+World bob_arena(double asked_resolution_m, bool closed) {
+  const double n = std::max(20.0, std::ceil(kArenaCellM / asked_resolution_m - 1e-9));
+  const double resolution_m = kArenaCellM / n;
+  std::vector<Box> boxes = {{0.50, 1.85, 0.55, 2.50}, {0.50, 2.48, 1.25, 2.53},
+                            {1.60, 2.05, 1.92, 2.35}, {1.15, 0.95, 1.70, 1.00},
+                            {1.40, 1.00, 1.45, 1.25}, {0.50, 0.50, 0.80, 0.55}};
+  if (closed) {
+    boxes.push_back({0, 0, kArenaW, kBoardT});
+    boxes.push_back({0, kArenaH - kBoardT, kArenaW, kArenaH});
+    boxes.push_back({0, 0, kBoardT, kArenaH});
+    boxes.push_back({kArenaW - kBoardT, 0, kArenaW, kArenaH});
+    return rasterize_boxes(boxes, kArenaW, kArenaH, resolution_m, "builtin:bob-arena");
+  }
+  for (Box& b : boxes) b = {b.x0 + kOpenMarginM, b.y0 + kOpenMarginM, b.x1 + kOpenMarginM,
+                            b.y1 + kOpenMarginM};
+  return rasterize_boxes(boxes, kArenaW + 2 * kOpenMarginM, kArenaH + 2 * kOpenMarginM,
+                         resolution_m, "builtin:bob-arena-open");
+}
+
 }  // namespace
 
-std::vector<std::string> builtin_world_names() { return {"office", "labyrinth"}; }
+std::vector<std::string> builtin_world_names() {
+  return {"office", "labyrinth", "bob-arena", "bob-arena-open"};
+}
 
 World builtin_world(const std::string& name, double resolution_m) {
   if (name == "office") return office(resolution_m);
   if (name == "labyrinth") return labyrinth(resolution_m);
+  if (name == "bob-arena") return bob_arena(resolution_m, true);
+  if (name == "bob-arena-open") return bob_arena(resolution_m, false);
   return World();
 }
 

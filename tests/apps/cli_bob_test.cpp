@@ -34,6 +34,11 @@ std::filesystem::path write_world(const TempDir& dir, const std::vector<std::str
   return dir.path() / "w.yaml";
 }
 
+std::string fmt_step(int n) {
+  std::string s = std::to_string(n);
+  return std::string(5 - s.size(), '0') + s;
+}
+
 const std::vector<std::string> kRoom = {"############", "#..........#", "#..........#",
                                         "#...##.....#", "#...##.....#", "#..........#",
                                         "#.....#....#", "#..........#", "############"};
@@ -75,6 +80,70 @@ TEST(CliBob, WritesMonitorMapAndReportForBothVariants) {
     EXPECT_EQ(static_cast<unsigned char>(bob[10]), 0xff);
     EXPECT_EQ(static_cast<unsigned char>(bob[11]), 0x0f);
   }
+}
+
+TEST(CliBob, ResenseOffIsRecordedInTheReportAndABadValueIsAUsageError) {
+  TempDir dir;
+  const auto world = write_world(dir, kRoom);
+  const auto out = dir.path() / "out";
+  const support::CliRun run = run_cli("bob --world " + world.string() +
+                                      " --resense off --seed 3 --quiet --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
+  EXPECT_EQ(report["options"]["resense"], "off");
+  EXPECT_EQ(report["bob"]["resensed_cells"], 0);
+  const support::CliRun bad = run_cli("bob --world " + world.string() +
+                                      " --resense maybe --quiet --out " + out.string() + "2");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+}
+
+TEST(CliBob, MapBobOpensInInfoAndRenderAndATruncatedOneIsAnInputError) {
+  TempDir dir;
+  const auto world = write_world(dir, kRoom);
+  const auto out = dir.path() / "out";
+  ASSERT_EQ(run_cli("bob --world " + world.string() + " --noise off --quiet --out " + out.string())
+                .exit_code,
+            0);
+  const support::CliRun info = run_cli("info --json " + (out / "map.bob").string());
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  const nlohmann::json j = nlohmann::json::parse(info.output);
+  EXPECT_EQ(j["format"], "bob");
+  EXPECT_EQ(j["width_cells"], 12);
+  EXPECT_EQ(j["height_cells"], 9);
+  EXPECT_DOUBLE_EQ(j["resolution_m"].get<double>(), 0.22);
+  // kRoom with noise off: mapped exactly, so the free cells are the room's 65.
+  EXPECT_EQ(j["free_cells"], 65);
+  const auto png = dir.path() / "map.png";
+  const support::CliRun render =
+      run_cli("render " + (out / "map.bob").string() + " --out " + png.string());
+  ASSERT_EQ(render.exit_code, 0) << render.output;
+  EXPECT_TRUE(std::filesystem::exists(png));
+  const std::string bytes = read_bytes(out / "map.bob");
+  support::write_bytes(dir / "short.bob", bytes.substr(0, bytes.size() - 1));
+  const support::CliRun bad = run_cli("info " + (dir.path() / "short.bob").string());
+  EXPECT_EQ(bad.exit_code, 3) << bad.output;
+  EXPECT_THAT(bad.output, HasSubstr("short.bob"));
+}
+
+TEST(CliBob, MonitorDirHoldsOnePictureForTheStartAndOneForEveryMove) {
+  TempDir dir;
+  const auto world = write_world(dir, kRoom);
+  const auto out = dir.path() / "out";
+  const auto monitor = dir.path() / "monitor";
+  const support::CliRun run = run_cli("bob --world " + world.string() + " --noise off --monitor-dir " +
+                                      monitor.string() + " --quiet --out " + out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
+  const int moves = report["bob"]["path_cells"].get<int>();
+  int frames = 0;
+  for (const auto& e : std::filesystem::directory_iterator(monitor)) {
+    EXPECT_EQ(e.path().extension(), ".png");
+    ++frames;
+  }
+  EXPECT_EQ(frames, moves + 1);  // noise off: no bumps
+  EXPECT_TRUE(std::filesystem::exists(monitor / "step_00000.png"));
+  EXPECT_EQ(read_bytes(monitor / ("step_" + fmt_step(moves) + ".png")),
+            read_bytes(out / "monitor.png"));
 }
 
 int count_lines(const std::string& s) {

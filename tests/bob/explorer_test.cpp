@@ -296,6 +296,29 @@ TEST(Explorer, ReSensingChangesSensedCellsButNeverMakesAVisitedCellOccupied) {
   EXPECT_EQ(ex.resensed(), 2u);
 }
 
+TEST(Explorer, WithReSensingOffTheFirstReadingOfACellStays) {
+  std::vector<std::uint8_t> map(PackedMap::bytes_needed(3, 3));
+  std::vector<std::uint8_t> final_map(FinalMap::bytes_needed(3, 3));
+  Explorer ex;
+  ExplorerOptions options;
+  options.resense = false;
+  ASSERT_EQ(ex.init(options, map.data(), map.size(), final_map.data(), final_map.size(), 3, 3),
+            Status::kOk);
+  ASSERT_EQ(ex.sense({1, 2}, true), Status::kOk);
+  ASSERT_EQ(ex.sense({1, 2}, false), Status::kOk);  // ignored: stays occupied
+  EXPECT_EQ(ex.map().state({1, 2}), CellState::kOccupied);
+  EXPECT_TRUE(ex.final_map().occupied({1, 2}));
+  ASSERT_EQ(ex.sense({1, 1}, false), Status::kOk);
+  ASSERT_EQ(ex.start({1, 0}, Direction::kNorth), Status::kOk);
+  Direction d = Direction::kNorth;
+  ASSERT_EQ(ex.next_move(d), Status::kOk);
+  ASSERT_EQ(ex.sense({1, 1}, true), Status::kOk);  // a visited cell: ignored too
+  EXPECT_FALSE(ex.final_map().occupied({1, 1}));
+  EXPECT_EQ(ex.resensed(), 0u);
+  EXPECT_EQ(ex.discarded_readings(), 0u);
+  EXPECT_EQ(ex.ignored_readings(), 2u);
+}
+
 // A pocket of two cells: the robot drives into the front cell, sees walls all round, and comes
 // back; condition (i) stops it at the start. The map-aware variant stops where it is instead.
 TEST(Explorer, RobotBoxedInAPocketExploresItAndStops) {

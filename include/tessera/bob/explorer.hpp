@@ -101,6 +101,19 @@ class Explorer {
   /// it 1 in the final map (kOk).
   Status sense(GridCell c, bool occupied);
 
+  /// One cell a step's beams swept (section 3.2: B2, C3 or D2 of Figure 3), read free or occupied.
+  /// A "free" reading goes to sense(); an "occupied" one too, unless the robot has stood in the
+  /// cell: the three targets are read occupied whenever a reflector *may* lie in them (the IR
+  /// noise and the pose uncertainty), which is the safe side for a cell the robot has not been in
+  /// but weaker evidence than having stood there, so a visited cell takes only detections placed
+  /// inside it (report_detection). Same statuses as sense().
+  Status report_target(GridCell c, bool occupied);
+  /// A reading placed its reflector inside cell c, which the step's beams do not sweep as a whole
+  /// (B1, C2's far neighbours...): a detection only, never "free". Recorded as an "occupied"
+  /// reading of c when c is sensed already (an unsensed cell waits for a full sweep); in a
+  /// visited cell it marks the final map (decision 0008). Same statuses as sense().
+  Status report_detection(GridCell c);
+
   /// Places the robot in `cell` facing `heading` and marks the cell visited. Section 3.4 requires
   /// the front neighbour to be unoccupied: kFrontBlocked if it is outside the grid or was sensed
   /// occupied (the explorer then stays unstarted); an unsensed front cell is taken as free, as
@@ -137,6 +150,8 @@ class Explorer {
   /// "Occupied" readings of visited cells: kept out of the mapping state, recorded in the final
   /// map only.
   [[nodiscard]] std::uint32_t discarded_readings() const { return discarded_; }
+  /// Readings of already sensed cells ignored because re-sensing is off (ExplorerOptions).
+  [[nodiscard]] std::uint32_t ignored_readings() const { return ignored_; }
   /// Cells of the grid not sensed yet.
   [[nodiscard]] int unsensed_cells() const { return unsensed_; }
 
@@ -189,6 +204,7 @@ class Explorer {
   std::uint32_t quarter_turns_ = 0;
   std::uint32_t resensed_ = 0;
   std::uint32_t discarded_ = 0;
+  std::uint32_t ignored_ = 0;
   std::uint32_t blocked_moves_ = 0;
   // What blocked() needs to take the last move back (kUndo* bits).
   std::uint8_t undo_ = 0;

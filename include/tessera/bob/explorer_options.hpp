@@ -19,6 +19,12 @@ enum class Backtrack : std::uint8_t {
 
 struct ExplorerOptions {
   Backtrack backtrack = Backtrack::kTrail;
+  /// BOBMapping 3.4 re-sensing: a later reading of a sensed cell changes it (a visited cell never
+  /// becomes occupied; an obstacle read inside it goes into the final map, decision 0008). Off:
+  /// the first reading of a cell is final and later readings of sensed cells are ignored (the
+  /// paper's ablation, "20 errors arose while mapping, but using the re-sensing process, the
+  /// errors dropped to six"). Bumps (Explorer::blocked) are not readings and act either way.
+  bool resense = true;
 };
 
 }  // namespace tessera::bob

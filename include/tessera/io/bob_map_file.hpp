@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "tessera/core/result.hpp"
+#include "tessera/grid/occupancy_grid.hpp"
 
 namespace tessera {
 
@@ -46,5 +47,11 @@ struct BobMapFile {
 
 /// Reads and decodes a map.bob file; kInput errors name the file.
 [[nodiscard]] Result<BobMapFile> read_bob_map(const std::filesystem::path& path);
+
+/// The map as an occupancy grid (cell side cell_mm / 1000 m, origin (0, 0)): bit 1 occupied,
+/// 0 free. The 1-bit map cannot tell an unsensed cell from an occupied one; both are occupied,
+/// as the robot treats them. Lets `tessera info` and `tessera render` open map.bob files.
+/// kInput error when cell_mm is 0.
+[[nodiscard]] Result<OccupancyGrid> bob_map_to_grid(const BobMapFile& map, const std::string& name);
 
 }  // namespace tessera

@@ -25,13 +25,16 @@
 //  - At the start the robot is placed by hand (belief = truth) centred in its cell, facing North,
 //    and senses the three cells around it as if it had just driven in from the cell behind (that
 //    cell is taken as free for this one sensing; nothing else changes).
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "tessera/bob/explorer.hpp"
+#include "tessera/mission/bob_explorer_port.hpp"
 #include "tessera/core/cell.hpp"
 #include "tessera/core/result.hpp"
 #include "tessera/sensors/beacon_trilateration.hpp"
@@ -53,6 +56,8 @@ enum class BobVariant {
 /// "trail" / "map-aware".
 [[nodiscard]] const char* bob_variant_name(BobVariant v);
 
+struct BobResult;
+
 struct BobMissionOptions {
   BobVariant variant = BobVariant::kTrail;
   double cell_m = 0.22;  // side of the robot's cells (BOBMapping 4.1)
@@ -60,6 +65,9 @@ struct BobMissionOptions {
   /// ranges. Off: exact readings, so motion and localisation are exact too.
   bool noise = true;
   std::uint64_t seed = 1;
+  /// BOBMapping 3.4 re-sensing (bob::ExplorerOptions::resense): off keeps each cell's first
+  /// reading, the paper's "20 errors ... dropped to six" ablation.
+  bool resense = true;
   /// Exact motion and localisation whatever `noise` says (the robot knows its true pose).
   bool perfect_localisation = false;
   WheelEncoderOptions encoders;
@@ -72,6 +80,12 @@ struct BobMissionOptions {
   /// Table 1 scoring band (BobTableRow): an obstacle this close to a cell edge may be mapped in
   /// either cell without counting as an error. Below the beacons' 3.5 cm mean error.
   double boundary_tolerance_m = 0.03;
+  /// The robot's grid covers only this rectangle {lo, hi} of the world, metres (snapped outwards
+  /// to the world's cells, as World::cropped does); the world outside it is still there for the
+  /// sensors and the body. An open configuration cut from a floor plan ("the limit of the space is
+  /// limited by the grid size", BOBMapping 4.3) then sees the floor plan beyond the grid's edge,
+  /// as the paper's robot saw the room, instead of a wall on the edge. Default: the whole world.
+  std::optional<std::array<Vec2, 2>> grid_rect_m;
   /// Start cell of the robot's grid, facing North. Default: in the largest 4-connected free area,
   /// the first cell in row-major order (lowest row, then lowest column) whose eight neighbours
   /// are free, or failing that whose North neighbour is free.
@@ -80,6 +94,10 @@ struct BobMissionOptions {
   double robot_length_m = 0.16;
   double robot_width_m = 0.15;
   int samples_per_move = 12;
+  /// Called with the run so far at the start and after every step (a move or a bump): route,
+  /// size, start, final_map and sensed from the explorer's maps (BobExplorerPort::snapshot); row
+  /// and localisation are left empty. For a monitor (io/bob_monitor.hpp); unset: not called.
+  std::function<void(const BobResult&)> on_step;
 };
 
 /// BOBMapping Table 1 for one configuration, plus the comparison with the SmartDFS bound.
@@ -87,6 +105,7 @@ struct BobTableRow {
   int cells = 0;         // cells in the configuration: every cell of the grid (W x H)
   int sensed_cells = 0;  // cells sensed at least once
   int resensed = 0;      // readings that changed an already sensed cell
+  int ignored_readings = 0;  // readings of sensed cells ignored with re-sensing off
   // Errors over sensed cells of the final map (BobResult::final_map: a visited cell with an
   // obstacle detected inside counts as occupied), scored with a don't-care band of
   // boundary_tolerance_m either side of each cell edge (the robot knows its grid only to its
@@ -147,5 +166,12 @@ struct BobResult {
 /// explorer did not stop within 64 moves per cell (a bug).
 /// Cost: O(moves) with kTrail, O(moves * cells) with kMapAware.
 [[nodiscard]] Result<BobResult> run_bob(const World& world, const BobMissionOptions& options);
+
+/// The same with the explorer behind `explorer` (the firmware across a serial link, for one):
+/// run_bob(world, options) is this with a bob::Explorer in this process. The explorer's answers
+/// decide the run; a link error stops it (its Error). Deterministic for a given seed when the
+/// explorer is.
+[[nodiscard]] Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
+                                        BobExplorerPort& explorer);
 
 }  // namespace tessera

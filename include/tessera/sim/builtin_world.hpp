@@ -12,6 +12,10 @@ namespace tessera {
 /// A built-in floor plan rasterised at `resolution_m`, or an empty World (size 0) for an unknown
 /// name. "office": 16 m x 12 m, four rooms off a corridor, a hall with a pillar; walls 0.2 m thick.
 /// "labyrinth": the lecture's small maze of corridors one metre wide, 8 m x 8 m.
+/// "bob-arena": a BOBMapping-like 2.42 m x 3.08 m arena (11 x 14 cells of 0.22 m, section 4.2)
+/// with polystyrene barriers, closed by boards; "bob-arena-open": the same barriers on an open
+/// floor 0.44 m wider all round (crop 0.44,0.44,2.86,3.52 for the 11 x 14 grid). Both are drawn
+/// at 0.22 / n m, n >= 20, the coarsest such resolution no coarser than `resolution_m`.
 [[nodiscard]] World builtin_world(const std::string& name, double resolution_m = 0.1);
 
 }  // namespace tessera

@@ -74,7 +74,10 @@ TEST(LaserSlam, SimulatedLoopEndsFarCloserToTheTruthThanOdometry) {
   std::printf("mean position error: odometry %.3f m, SLAM %.3f m; %d loop closures\n",
               odometry_error, slam_error, r->stats.loop_closures);
   EXPECT_LT(slam_error, 0.5 * odometry_error);
-  EXPECT_LT(slam_error, 0.05);
+  // 0.02 m with the translation tied to odometry at 10/m; 0.06-0.09 m at 3/m (decision 0013): in
+  // this 0.1 m-cell world with 2-degree beams the scans pin translation worse than the simulated
+  // odometry does, while real logs (odometry scale errors of 2 %) need the weaker tie.
+  EXPECT_LT(slam_error, 0.1);
   EXPECT_GT(r->stats.loop_closures, 0);
   EXPECT_GT(r->stats.optimizations, 0);
   EXPECT_GT(r->map.known_count(), 1000u);

@@ -135,9 +135,8 @@ struct LaserSlamOptions {
   /// the same as fixed sigmas, so the simpler one is the default.
   ConstraintSigmas loop_sigmas{0.02, 0.01};
   double loop_hessian_scale = 0.0;
-  /// Huber scale of robust constraints, in units of the whitened residual. 5 rather than 1: a
-  /// correct closure after metres of drift must be able to pull (decision 0013).
-  double huber_scale = 5.0;
+  /// Huber scale of robust constraints, in units of the whitened residual.
+  double huber_scale = 1.0;
 
   /// The final map: every node's scan at its optimised pose.
   double map_resolution_m = 0.05;

@@ -48,8 +48,7 @@ struct LaserSlamOptions {
   /// Returns beyond 20 m only clear free space. Decision 0009 had 8 m (a heading error of 0.2 deg
   /// moves a return 8 m away by 2.8 cm), tuned on the Intel lab's narrow rooms; in large halls
   /// (FHW, ACES) most walls are further away and an 8 m scan holds too little to match, so local
-  /// SLAM drifted. 20 m: FHW seed 1 ATE 1.85 m instead of 3.44 m, Intel raw relations 0.0190 m
-  /// instead of 0.0198 m (decision 0013). The scan's own no-return threshold still applies.
+  /// SLAM drifted (decision 0013). The scan's own no-return threshold still applies.
   ScanPointsOptions points{.min_range_m = 0.1, .max_range_m = 20.0, .missing_ray_length_m = 5.0};
   /// Voxel size of the points used for local matching (0: every point).
   double matching_voxel_m = 0.0;
@@ -77,7 +76,8 @@ struct LaserSlamOptions {
   /// perfect prior). A translation tied at 10/m carries the odometry's scale error (2 % in the
   /// test protocol) along corridors, where the walls pin the pose only across them, and the loops
   /// then close only by bending the corridors: Intel corrected 0.17-0.21 m ATE at 10/m, 0.07-0.09
-  /// m at 3/m. The Intel raw relations improve too (0.0181 m against 0.0195 m).
+  /// m at 3/m. The Intel raw relations improve too (0.0173 m at 5/m, 0.0189 m at 10/m, 0.0168 m at
+  /// 3/m, with the rest of decision 0013).
   ScanRefinerOptions refiner{1.0, 3.0, 5.0, 20};
 
   bool loop_closure = true;

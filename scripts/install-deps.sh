@@ -11,6 +11,9 @@ packages=(
   # The C++ headers for arm-none-eabi (<cstddef>, <cstdint>, ...): only a Recommends of
   # gcc-arm-none-eabi, so --no-install-recommends leaves them out and make bob-firmware fails.
   libstdc++-arm-none-eabi-dev
+  # The fuzz preset (make fuzz, make fuzz-smoke): clang and its runtime libraries, which hold
+  # libFuzzer (libclang_rt.fuzzer) and the sanitizer runtimes.
+  clang libclang-rt-14-dev
 )
 
 missing=()

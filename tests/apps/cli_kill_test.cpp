@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -128,10 +129,17 @@ void check_kills(ArgsFor args_for, int expected_outputs) {
   const fs::path ref_a = dir / "ref_a", ref_b = dir / "ref_b", out = dir / "out";
 
   // Reference outputs of complete runs, and how long a run takes.
-  const auto t0 = Clock::now();
-  ASSERT_EQ(wait_for(start(args_for(kSeedA, ref_a))), 0);
-  const double run_s = std::chrono::duration<double>(Clock::now() - t0).count();
-  ASSERT_EQ(wait_for(start(args_for(kSeedB, ref_b))), 0);
+  // A complete run's time: the shortest of the three complete runs (the first one warms the
+  // caches up and is slower).
+  double run_s = 1e9;
+  const auto run_complete = [&run_s, args_for](int seed, const fs::path& folder) {
+    const auto t0 = Clock::now();
+    const int code = wait_for(start(args_for(seed, folder)));
+    run_s = std::min(run_s, std::chrono::duration<double>(Clock::now() - t0).count());
+    return code;
+  };
+  ASSERT_EQ(run_complete(kSeedA, ref_a), 0);
+  ASSERT_EQ(run_complete(kSeedB, ref_b), 0);
   const Outputs a = outputs_in(ref_a), b = outputs_in(ref_b);
   ASSERT_EQ(static_cast<int>(a.visible.size()), expected_outputs);
   ASSERT_EQ(b.visible.size(), a.visible.size());
@@ -139,7 +147,7 @@ void check_kills(ArgsFor args_for, int expected_outputs) {
   std::set<std::string> temp_prefixes;
   for (const auto& [name, bytes] : a.visible) temp_prefixes.insert("." + name + ".tmp-");
 
-  ASSERT_EQ(wait_for(start(args_for(kSeedA, out))), 0);
+  ASSERT_EQ(run_complete(kSeedA, out), 0);
   const int kills = std::getenv("TESSERA_KILL_RUNS") ? std::atoi(std::getenv("TESSERA_KILL_RUNS"))
                                                      : kDefaultKills;
   std::mt19937 rng(20261201);

@@ -91,14 +91,14 @@ for i in "${!pids[@]}"; do
   log=$build/logs/$format.log
   done_line=$(grep -E '^#[0-9]+[[:space:]]+DONE' "$log" | tail -1)
   last=$(grep -E '^#[0-9]+[[:space:]]' "$log" | tail -1)
-  stat() { sed -n "s/.*$1: *\([0-9]*\).*/\1/p" <<< "${done_line:-$last}"; }
+  field() { sed -n "s/.*$1: *\([0-9]*\).*/\1/p" <<< "${done_line:-$last}"; }
   execs=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log")
   secs=$(sed -n 's/.*Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log")
   corpus=$(sed -n 's/.*corp: \([0-9]*\)\/.*/\1/p' <<< "${done_line:-$last}")
   result=ok
   if [ $rc -ne 0 ]; then result=FOUND; failed=1; fi
   printf '%-20s %-7s %10s %8s %7s %7s %6s\n' "$format" "$result" "${execs:-?}" "${corpus:-?}" \
-    "$(stat cov)" "$(stat ft)" "${secs:-?}"
-  [ $rc -ne 0 ] && echo "  $log; inputs in $build/artifacts/$format/" && grep -m3 -E 'ERROR|fuzz |runtime error' "$log" | sed 's/^/  /'
+    "$(field cov)" "$(field ft)" "${secs:-?}"
+  [ $rc -ne 0 ] && echo "  $log; inputs in $build/artifacts/$format/" && grep -a -m3 -E 'ERROR|fuzz |runtime error' "$log" | sed 's/^/  /'
 done
 exit $failed

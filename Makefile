@@ -6,6 +6,7 @@ DEMO_OUT ?= out/demo
 TESSERA := build/dev/apps/tessera/tessera
 
 .PHONY: all deps configure build cli demo test test-dev test-ci test-sanitize bench clean
+.PHONY: fuzz-build fuzz fuzz-smoke kill-test
 
 all: build
 
@@ -26,7 +27,7 @@ demo: cli
 	$(TESSERA) explore --out $(DEMO_OUT)
 
 ifeq ($(CI),true)
-test: test-ci test-sanitize bob-firmware bob-firmware-test
+test: test-ci test-sanitize bob-firmware bob-firmware-test fuzz-smoke
 else
 test: test-dev
 endif
@@ -71,3 +72,23 @@ bob-firmware-test: bob-firmware
 	@if [ -x build/ci/apps/tessera/tessera ]; then t=build/ci/apps/tessera/tessera; else \
 	  cmake --preset dev && cmake --build --preset dev -j $(JOBS) --target tessera && t=$(TESSERA); fi; \
 	bash scripts/bob_firmware_test.sh $$t build/cortex-m/firmware/bob
+
+# libFuzzer harnesses of the readers (fuzz/, docs/fuzzing.md): clang with ASan and UBSan, only the
+# readers and what they need. `make fuzz` runs each harness FUZZ_SECONDS on its corpus (JOBS at a
+# time); `make fuzz-smoke` runs each 30 s, two at a time (CI). Both fail when a harness finds a
+# crash, a hang, a leak, a sanitizer report or an error that does not name the file.
+FUZZ_SECONDS ?= 600
+fuzz-build: deps
+	cmake --preset fuzz
+	cmake --build --preset fuzz -j $(JOBS)
+
+fuzz: fuzz-build
+	scripts/fuzz.sh $(FUZZ_SECONDS) $(JOBS)
+
+fuzz-smoke: fuzz-build
+	scripts/fuzz.sh 30 2
+
+# The kill test with 200 kills per command (ctest runs it with 20).
+kill-test: configure
+	cmake --build --preset dev -j $(JOBS) --target tessera apps_cli_kill_test
+	TESSERA_KILL_RUNS=200 build/dev/tests/apps/apps_cli_kill_test

@@ -15,6 +15,9 @@ packages=(
   libstdc++-arm-none-eabi-dev
   # make bob-firmware-test runs the firmware on an emulated Cortex-M4 (the MPS2 AN386 board).
   qemu-system-arm
+  # The fuzz preset (make fuzz, make fuzz-smoke): clang and its runtime libraries, which hold
+  # libFuzzer (libclang_rt.fuzzer) and the sanitizer runtimes.
+  clang libclang-rt-14-dev
 )
 
 missing=()

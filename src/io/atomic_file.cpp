@@ -1,22 +1,57 @@
 #include "tessera/io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
 namespace tessera {
 namespace {
 
+// ".<name>.tmp-": hidden, so that a listing of the output folder (ls, a glob of *.png) never
+// shows a temporary as an output, even one a killed process left behind.
+std::string temp_prefix_for(const std::filesystem::path& path) {
+  return "." + path.filename().string() + ".tmp-";
+}
+
 std::filesystem::path temp_path_for(const std::filesystem::path& path) {
-  std::filesystem::path tmp = path;
-  tmp += ".tmp-" + std::to_string(static_cast<long long>(::getpid()));
-  return tmp;
+  return path.parent_path() /
+         (temp_prefix_for(path) + std::to_string(static_cast<long long>(::getpid())));
+}
+
+// True when `text` is a process id (digits only) of no running process.
+bool names_dead_process(std::string_view text) {
+  if (text.empty() || text.size() > 9) return false;
+  long long pid = 0;
+  for (const char c : text) {
+    if (c < '0' || c > '9') return false;
+    pid = pid * 10 + (c - '0');
+  }
+  return pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
+
+// Removes the temporaries of `path` that processes killed while writing it left behind
+// (".<name>.tmp-<pid>" whose process is gone). Best effort: errors are ignored, since the write
+// itself does not depend on it.
+void remove_stale_temps(const std::filesystem::path& path) {
+  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
+  const std::string prefix = temp_prefix_for(path);
+  std::error_code ec;
+  std::filesystem::directory_iterator it(dir, ec);
+  for (; !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.starts_with(prefix) &&
+        names_dead_process(std::string_view(name).substr(prefix.size()))) {
+      ::unlink(it->path().c_str());
+    }
+  }
 }
 
 // Writes and fsyncs `bytes` into a fresh `tmp`. Leaves nothing behind on failure.
@@ -70,6 +105,7 @@ Status write_files_atomic(std::span<const PendingFile> files) {
       remove_temps(0);
       return runtime_error("'" + f.path.string() + "': cannot write: not a file name");
     }
+    remove_stale_temps(f.path);
     std::filesystem::path tmp = temp_path_for(f.path);
     if (Status s = write_temp(tmp, f.path, f.bytes); !s) {
       remove_temps(0);

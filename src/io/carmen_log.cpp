@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "internal/decoders.hpp"
 #include "internal/file_util.hpp"
 #include "internal/pose_interpolation.hpp"
 #include "internal/text_fields.hpp"
@@ -288,8 +289,13 @@ Result<LaserLog> read_carmen_log(const std::filesystem::path& path,
   if (auto problem = validate(options)) return usage_error("CarmenReadOptions: " + *problem);
   Result<std::string> bytes = io_internal::read_file_bytes(path);
   if (!bytes) return bytes.error();
-  const std::string file = path.string();
+  return io_internal::decode_carmen_log(*bytes, path.string(), options);
+}
 
+namespace io_internal {
+
+Result<LaserLog> decode_carmen_log(std::string_view text, const std::string& file,
+                                   const CarmenReadOptions& options) {
   LaserLog log;
   std::vector<PendingOdometry> pending;
   std::vector<std::size_t> old_format;  // FLASER/RLASER scans, which get the automatic no-return
@@ -297,7 +303,7 @@ Result<LaserLog> read_carmen_log(const std::filesystem::path& path,
   int skipped_rear = 0;
 
   const Status read = io_internal::for_each_record(
-      *bytes, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
+      text, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
         const std::string_view tag = fields.front();
         MessageLine line(file, line_no, fields);
         if (tag == "ODOM") {
@@ -360,5 +366,7 @@ Result<LaserLog> read_carmen_log(const std::filesystem::path& path,
   }
   return log;
 }
+
+}  // namespace io_internal
 
 }  // namespace tessera

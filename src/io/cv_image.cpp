@@ -4,10 +4,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
 #include "internal/file_util.hpp"
+#include "internal/image_header.hpp"
 #include "internal/raw_image.hpp"
 #include "tessera/core/assert.hpp"
 
@@ -17,8 +19,29 @@ bool looks_like_png(const std::string& bytes) {
   return bytes.size() >= 8 && bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
 }
 
+namespace {
+
+// Silences OpenCV's own log while it decodes: its decoders log their complaints about damaged
+// files to stderr ("OpenJPEG2000: Stream too short", found by fuzz/image_fuzz.cpp), and the library
+// never prints; the reader reports the file instead.
+class QuietOpenCvLog {
+ public:
+  QuietOpenCvLog()
+      : previous_(cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT)) {}
+  ~QuietOpenCvLog() { cv::utils::logging::setLogLevel(previous_); }
+  QuietOpenCvLog(const QuietOpenCvLog&) = delete;
+  QuietOpenCvLog& operator=(const QuietOpenCvLog&) = delete;
+
+ private:
+  cv::utils::logging::LogLevel previous_;
+};
+
+}  // namespace
+
 cv::Mat imdecode_or_empty(const std::string& bytes, int flags) {
   cv::Mat m;
+  if (!is_supported_image(bytes)) return m;
+  const QuietOpenCvLog quiet;
   try {
     // cv::Mat does not write through the pointer here; imdecode only reads.
     const cv::Mat buffer(1, static_cast<int>(bytes.size()), CV_8UC1,
@@ -37,6 +60,9 @@ Result<cv::Mat> read_image_file(const std::filesystem::path& path, int flags, Pn
     if (const std::string problem = png_structure_problem(*bytes); !problem.empty()) {
       return input_error(path.string() + ": cannot decode image: " + problem);
     }
+  }
+  if (const std::string problem = image_header_problem(*bytes); !problem.empty()) {
+    return input_error(path.string() + ": cannot decode image: " + problem);
   }
   cv::Mat m = imdecode_or_empty(*bytes, flags);
   if (m.empty() || m.dims != 2) return input_error(path.string() + ": cannot decode image");

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "internal/decoders.hpp"
 #include "internal/file_util.hpp"
 #include "internal/text_fields.hpp"
 #include "tessera/io/atomic_file.hpp"
@@ -98,15 +99,19 @@ Status resolve_by_chaining(const std::string& file, const std::vector<RawEdge>& 
 Result<slam::PoseGraph> read_g2o(const std::filesystem::path& path) {
   Result<std::string> bytes = io_internal::read_file_bytes(path);
   if (!bytes) return bytes.error();
-  const std::string file = path.string();
+  return io_internal::decode_g2o(*bytes, path.string());
+}
 
+namespace io_internal {
+
+Result<slam::PoseGraph> decode_g2o(std::string_view text, const std::string& file) {
   slam::PoseGraph graph;
   std::unordered_map<int, int> index_of;     // g2o id -> node index
   std::unordered_map<int, int> vertex_line;  // g2o id -> line of its VERTEX_SE2
   std::vector<RawEdge> raw;
 
   const Status read = io_internal::for_each_record(
-      *bytes, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
+      text, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
         const std::string_view tag = fields.front();
         const bool vertex = tag == "VERTEX_SE2";
         if (!vertex && tag != "EDGE_SE2") return Ok{};
@@ -172,6 +177,8 @@ Result<slam::PoseGraph> read_g2o(const std::filesystem::path& path) {
   if (!resolved) return resolved.error();
   return graph;
 }
+
+}  // namespace io_internal
 
 std::string encode_g2o(const slam::PoseGraph& graph) {
   TESSERA_ASSERT(graph.ids.empty() || graph.ids.size() == graph.poses.size());

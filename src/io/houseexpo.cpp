@@ -4,27 +4,24 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "internal/decoders.hpp"
 #include "internal/file_util.hpp"
+#include "internal/json_parse.hpp"
 
 namespace tessera {
 
 Result<PolygonMap> read_houseexpo_json(const std::filesystem::path& path) {
-  const std::string name = path.string();
   Result<std::string> text = io_internal::read_file_bytes(path);
   if (!text) return text.error();
-  nlohmann::json doc;
-  try {
-    doc = nlohmann::json::parse(*text);
-  } catch (const nlohmann::json::parse_error& e) {
-    // e.what(): "[json.exception.parse_error.101] parse error at line 3, column 5: <reason>".
-    std::string reason = e.what();
-    if (const std::size_t colon = reason.find(": "); colon != std::string::npos) {
-      reason = reason.substr(colon + 2);
-    }
-    const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;
-    return input_error(name + ":" + std::to_string(io_internal::line_of_offset(*text, byte)) +
-                       ": JSON syntax error: " + reason);
-  }
+  return io_internal::decode_houseexpo_json(*text, path.string());
+}
+
+namespace io_internal {
+
+Result<PolygonMap> decode_houseexpo_json(std::string_view text, const std::string& name) {
+  Result<nlohmann::json> parsed = parse_json(text, name);
+  if (!parsed) return parsed.error();
+  const nlohmann::json& doc = *parsed;
   if (!doc.is_object()) {
     return input_error(name + ": expected a HouseExpo JSON object with 'verts'");
   }
@@ -54,24 +51,38 @@ Result<PolygonMap> read_houseexpo_json(const std::filesystem::path& path) {
   return map;
 }
 
+}  // namespace io_internal
+
 Result<OccupancyGrid> read_houseexpo_map(const std::filesystem::path& path, double resolution_m) {
   if (!(resolution_m > 0.0)) {
     return input_error(path.string() + ": resolution must be > 0, got " +
                        io_internal::format_double(resolution_m));
   }
-  Result<PolygonMap> plan = read_houseexpo_json(path);
+  Result<std::string> text = io_internal::read_file_bytes(path);
+  if (!text) return text.error();
+  return io_internal::decode_houseexpo_map(*text, path.string(), resolution_m);
+}
+
+namespace io_internal {
+
+Result<OccupancyGrid> decode_houseexpo_map(std::string_view text, const std::string& name,
+                                           double resolution_m) {
+  Result<PolygonMap> plan = decode_houseexpo_json(text, name);
   if (!plan) return plan.error();
   const auto [lo, hi] = plan->bounds();
   // One cell of margin on every side of the contour's bounding box.
   const Vec2 origin{lo.x - resolution_m, lo.y - resolution_m};
-  const int width = static_cast<int>(std::ceil((hi.x - lo.x) / resolution_m - 1e-9)) + 2;
-  const int height = static_cast<int>(std::ceil((hi.y - lo.y) / resolution_m - 1e-9)) + 2;
-  if (static_cast<double>(width) * height > static_cast<double>(io_internal::kMaxCells)) {
-    return input_error(path.string() + ": a " + std::to_string(width) + " x " +
-                       std::to_string(height) + " grid at resolution " +
-                       io_internal::format_double(resolution_m) + " m is too large");
+  // Sizes in double first: far-apart vertices would overflow an int (undefined behaviour).
+  const double width = std::ceil((hi.x - lo.x) / resolution_m - 1e-9) + 2.0;
+  const double height = std::ceil((hi.y - lo.y) / resolution_m - 1e-9) + 2.0;
+  if (!(width * height <= static_cast<double>(kMaxCells))) {
+    return input_error(name + ": a " + format_double(width) + " x " + format_double(height) +
+                       " grid at resolution " + format_double(resolution_m) + " m is too large");
   }
-  return plan->rasterize(GridGeometry(origin, resolution_m, width, height));
+  return plan->rasterize(
+      GridGeometry(origin, resolution_m, static_cast<int>(width), static_cast<int>(height)));
 }
+
+}  // namespace io_internal
 
 }  // namespace tessera

@@ -6,6 +6,7 @@
 #include <exception>
 #include <string>
 
+#include "internal/decoders.hpp"
 #include "internal/file_util.hpp"
 #include "internal/raw_image.hpp"
 #include "tessera/core/angle.hpp"
@@ -75,19 +76,10 @@ std::string yaml_string(const std::string& s) {
   return out + "\"";
 }
 
-}  // namespace
-
-Result<MapYaml> parse_map_yaml(const std::filesystem::path& yaml_path) {
-  Result<std::string> text = io_internal::read_file_bytes(yaml_path);
-  if (!text) return text.error();
+// The keys of a loaded document (decode_map_yaml). May throw YAML::Exception from yaml-cpp's
+// accessors; decode_map_yaml turns those into input errors.
+Result<MapYaml> map_yaml_from(const YAML::Node& doc, const std::filesystem::path& yaml_path) {
   const std::string name = yaml_path.string();
-  YAML::Node doc;
-  try {
-    doc = YAML::Load(*text);
-  } catch (const YAML::Exception& e) {
-    return input_error(name + ":" + std::to_string(e.mark.line + 1) +
-                       ": YAML syntax error: " + e.msg);
-  }
   if (!doc.IsMap()) {
     return input_error(name +
                        ": expected a YAML mapping with the keys image, resolution and origin"
@@ -179,6 +171,37 @@ Result<MapYaml> parse_map_yaml(const std::filesystem::path& yaml_path) {
                               map.image.string() + ")");
   }
   return map;
+}
+
+// yaml-cpp's mark of an exception, "<file>:<line>: " when it has one (marks are 0-based; -1 when
+// the exception has no position).
+std::string yaml_where(const std::string& name, const YAML::Mark& mark) {
+  return mark.is_null() || mark.line < 0 ? name + ": "
+                                         : name + ":" + std::to_string(mark.line + 1) + ": ";
+}
+
+}  // namespace
+
+Result<MapYaml> parse_map_yaml(const std::filesystem::path& yaml_path) {
+  Result<std::string> text = io_internal::read_file_bytes(yaml_path);
+  if (!text) return text.error();
+  return io_internal::decode_map_yaml(*text, yaml_path);
+}
+
+Result<MapYaml> io_internal::decode_map_yaml(std::string_view text,
+                                             const std::filesystem::path& yaml_path) {
+  const std::string name = yaml_path.string();
+  YAML::Node doc;
+  try {
+    doc = YAML::Load(std::string(text));
+  } catch (const YAML::Exception& e) {
+    return input_error(yaml_where(name, e.mark) + "YAML syntax error: " + e.msg);
+  }
+  try {
+    return map_yaml_from(doc, yaml_path);
+  } catch (const YAML::Exception& e) {
+    return input_error(yaml_where(name, e.mark) + "unexpected YAML structure: " + e.msg);
+  }
 }
 
 Result<OccupancyGrid> read_map_yaml(const std::filesystem::path& yaml_path) {

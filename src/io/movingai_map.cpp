@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "internal/decoders.hpp"
 #include "internal/file_util.hpp"
 
 namespace tessera {
@@ -37,14 +38,23 @@ bool passable(char c) { return c == '.' || c == 'G' || c == 'S'; }
 }  // namespace
 
 Result<OccupancyGrid> read_movingai_map(const std::filesystem::path& path, double cell_size_m) {
-  const std::string name = path.string();
   if (!(cell_size_m > 0.0)) {
-    return input_error(name + ": cell size must be > 0, got " +
+    return input_error(path.string() + ": cell size must be > 0, got " +
                        io_internal::format_double(cell_size_m));
   }
   Result<std::string> text = io_internal::read_file_bytes(path);
   if (!text) return text.error();
-  const std::vector<std::string_view> lines = split_lines(*text);
+  return io_internal::decode_movingai_map(*text, path.string(), cell_size_m);
+}
+
+namespace io_internal {
+
+Result<OccupancyGrid> decode_movingai_map(std::string_view text, const std::string& name,
+                                          double cell_size_m) {
+  if (!(cell_size_m > 0.0)) {
+    return input_error(name + ": cell size must be > 0, got " + format_double(cell_size_m));
+  }
+  const std::vector<std::string_view> lines = split_lines(text);
   const auto at = [&name](std::size_t index, const std::string& what) {
     return input_error(name + ":" + std::to_string(index + 1) + ": " + what);
   };
@@ -116,5 +126,7 @@ Result<OccupancyGrid> read_movingai_map(const std::filesystem::path& path, doubl
   }
   return grid;
 }
+
+}  // namespace io_internal
 
 }  // namespace tessera

@@ -1,5 +1,6 @@
 #include "tessera/io/pgm.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <string>
@@ -122,7 +123,6 @@ Result<GrayImage> decode_pgm(std::string_view bytes, const std::string& name) {
                     " pixels is too large");
   }
   const std::size_t count = static_cast<std::size_t>(width * height);
-  GrayImage image(static_cast<int>(width), static_cast<int>(height));
 
   if (binary) {
     // Exactly one whitespace character separates maxval from the raster.
@@ -139,6 +139,7 @@ Result<GrayImage> decode_pgm(std::string_view bytes, const std::string& name) {
                          std::to_string(height) + (bytes_per_sample == 2 ? "*2" : "") + " = " +
                          std::to_string(expected) + " bytes, got " + std::to_string(available));
     }
+    GrayImage image(static_cast<int>(width), static_cast<int>(height));
     const auto* raster = reinterpret_cast<const unsigned char*>(bytes.data() + in.pos_);
     for (std::size_t i = 0; i < count; ++i) {
       std::uint64_t v = bytes_per_sample == 2
@@ -150,6 +151,15 @@ Result<GrayImage> decode_pgm(std::string_view bytes, const std::string& name) {
     return image;
   }
 
+  // Plain PGM: every value takes a digit and a separator, so the rest of the file bounds the
+  // count before the image is allocated (a 20-byte header must not allocate gigabytes).
+  if (const std::size_t room = (bytes.size() - std::min(in.pos_, bytes.size()) + 1) / 2;
+      count > room) {
+    return input_error(name + ": truncated pixel data: expected " + std::to_string(width) + "*" +
+                       std::to_string(height) + " = " + std::to_string(count) +
+                       " values, the file has room for at most " + std::to_string(room));
+  }
+  GrayImage image(static_cast<int>(width), static_cast<int>(height));
   for (std::size_t i = 0; i < count; ++i) {
     in.skip_space_and_comments();
     if (in.pos_ >= bytes.size()) {

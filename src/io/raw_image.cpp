@@ -8,6 +8,7 @@
 
 #include "internal/cv_image.hpp"
 #include "internal/file_util.hpp"
+#include "internal/image_header.hpp"
 #include "tessera/io/pgm.hpp"
 
 namespace tessera::io_internal {
@@ -81,9 +82,13 @@ std::string png_structure_problem(const std::string& bytes) {
 Result<RawImage> read_raw_image(const std::filesystem::path& path) {
   Result<std::string> bytes = read_file_bytes(path);
   if (!bytes) return bytes.error();
+  return decode_raw_image(*bytes, path.string());
+}
+
+Result<RawImage> decode_raw_image(const std::string& bytes, const std::string& name) {
   RawImage image;
-  if (looks_like_pgm(*bytes)) {
-    Result<GrayImage> gray = decode_pgm(*bytes, path.string());
+  if (looks_like_pgm(bytes)) {
+    Result<GrayImage> gray = decode_pgm(bytes, name);
     if (!gray) return gray.error();
     image.width = gray->width;
     image.height = gray->height;
@@ -93,15 +98,18 @@ Result<RawImage> read_raw_image(const std::filesystem::path& path) {
     }
     return image;
   }
-  if (looks_like_png(*bytes)) {
-    if (const std::string problem = png_structure_problem(*bytes); !problem.empty()) {
-      return input_error(path.string() + ": cannot decode image: " + problem);
+  if (looks_like_png(bytes)) {
+    if (const std::string problem = png_structure_problem(bytes); !problem.empty()) {
+      return input_error(name + ": cannot decode image: " + problem);
     }
   }
-  const cv::Mat m = imdecode_or_empty(*bytes, cv::IMREAD_UNCHANGED);
+  if (const std::string problem = image_header_problem(bytes); !problem.empty()) {
+    return input_error(name + ": cannot decode image: " + problem);
+  }
+  const cv::Mat m = imdecode_or_empty(bytes, cv::IMREAD_UNCHANGED);
   if (m.empty() || m.dims != 2 || (m.depth() != CV_8U && m.depth() != CV_16U) || m.channels() < 1 ||
       m.channels() > 4) {
-    return input_error(path.string() + ": cannot decode image (expected a PNG or PGM file)");
+    return input_error(name + ": cannot decode image (expected a PNG or PGM file)");
   }
   image.width = m.cols;
   image.height = m.rows;

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "internal/decoders.hpp"
 #include "internal/file_util.hpp"
 #include "internal/text_fields.hpp"
 
@@ -13,13 +14,18 @@ namespace tessera {
 Result<std::vector<Relation>> read_relations(const std::filesystem::path& path) {
   Result<std::string> bytes = io_internal::read_file_bytes(path);
   if (!bytes) return bytes.error();
-  const std::string file = path.string();
+  return io_internal::decode_relations(*bytes, path.string());
+}
+
+namespace io_internal {
+
+Result<std::vector<Relation>> decode_relations(std::string_view text, const std::string& file) {
   constexpr std::array<std::string_view, 8> kNames = {"t1", "t2",   "x",     "y",
                                                       "z",  "roll", "pitch", "yaw"};
 
   std::vector<Relation> relations;
   const Status read = io_internal::for_each_record(
-      *bytes, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
+      text, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
         const std::string where = file + ":" + std::to_string(line_no) + ": ";
         if (fields.size() != kNames.size()) {
           return input_error(where + "expected 8 fields 't1 t2 x y z roll pitch yaw', got " +
@@ -41,5 +47,7 @@ Result<std::vector<Relation>> read_relations(const std::filesystem::path& path) 
   }
   return relations;
 }
+
+}  // namespace io_internal
 
 }  // namespace tessera

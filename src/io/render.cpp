@@ -63,9 +63,8 @@ Result<RgbImage> render_image(const RenderLayers& layers, int pixels_per_cell) {
         const auto v = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - *p)));
         color = {v, v, v};
         if (layers.truth != nullptr) {
-          const bool solid =
-              layers.truth->solid(
-                  layers.truth->geometry().cell_at_unchecked(layers.T_truth_map * g.center_of(c)));
+          const bool solid = layers.truth->solid(
+              layers.truth->geometry().cell_at_unchecked(layers.T_truth_map * g.center_of(c)));
           const CellState state = map.state(c);
           if (state == CellState::kFree && solid) color = kOccupiedAsEmptyColor;
           if (state == CellState::kOccupied && !solid) color = kEmptyAsOccupiedColor;

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "internal/decoders.hpp"
 #include "internal/file_util.hpp"
 #include "internal/raw_image.hpp"
 #include "tessera/core/angle.hpp"
@@ -211,10 +212,17 @@ bool type_chain_has(const WorldFile& world, const Block& model, std::string_view
 }  // namespace
 
 Result<StageFloorplan> parse_stage_world(const std::filesystem::path& path) {
-  const std::string name = path.string();
   Result<std::string> text = io_internal::read_file_bytes(path);
   if (!text) return text.error();
-  Result<std::vector<Token>> tokens = tokenize(*text, name);
+  return io_internal::decode_stage_world(*text, path);
+}
+
+namespace io_internal {
+
+Result<StageFloorplan> decode_stage_world(std::string_view text,
+                                          const std::filesystem::path& path) {
+  const std::string name = path.string();
+  Result<std::vector<Token>> tokens = tokenize(text, name);
   if (!tokens) return tokens.error();
   Result<WorldFile> world = Parser(*tokens, name).parse();
   if (!world) return world.error();
@@ -283,6 +291,8 @@ Result<StageFloorplan> parse_stage_world(const std::filesystem::path& path) {
   }
   return plan;
 }
+
+}  // namespace io_internal
 
 Result<OccupancyGrid> read_stage_world(const std::filesystem::path& path) {
   Result<StageFloorplan> plan = parse_stage_world(path);

@@ -15,24 +15,21 @@
 #include "internal/cv_image.hpp"
 #include "internal/file_util.hpp"
 #include "internal/text_fields.hpp"
+#include "internal/tum_rgbd_lists.hpp"
 #include "tessera/io/rgbd_pair_folder.hpp"
 #include "tessera/io/tum_trajectory.hpp"
 
 namespace tessera {
 namespace {
 
-/// One "t filename" line of rgb.txt or depth.txt.
-struct ListedImage {
-  double t_s = 0.0;
-  std::string name;
-  int line = 0;
-};
+using io_internal::associate;
+using io_internal::ListedImage;
 
 std::string where(const std::filesystem::path& file, int line) {
   return file.string() + ":" + std::to_string(line) + ": ";
 }
 
-/// Reads a TUM image list. Every non-comment line must be "t filename".
+/// Reads a TUM image list (decode_tum_image_list), saying which list is missing.
 Result<std::vector<ListedImage>> read_image_list(const std::filesystem::path& path,
                                                  const std::string& what) {
   std::error_code ec;
@@ -42,131 +39,19 @@ Result<std::vector<ListedImage>> read_image_list(const std::filesystem::path& pa
   }
   Result<std::string> text = io_internal::read_file_bytes(path);
   if (!text) return text.error();
-  std::vector<ListedImage> images;
-  const Status read = io_internal::for_each_record(
-      *text, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
-        if (fields.size() != 2) {
-          return input_error(where(path, line_no) + "expected 't filename', got " +
-                             std::to_string(fields.size()) + " fields");
-        }
-        ListedImage image;
-        if (!io_internal::parse_double(fields[0], image.t_s)) {
-          return input_error(where(path, line_no) + "expected a time stamp in seconds, got '" +
-                             std::string(fields[0]) + "'");
-        }
-        image.name = std::string(fields[1]);
-        image.line = line_no;
-        images.push_back(std::move(image));
-        return Ok{};
-      });
-  if (!read) return read.error();
-  std::stable_sort(images.begin(), images.end(),
-                   [](const ListedImage& a, const ListedImage& b) { return a.t_s < b.t_s; });
-  return images;
+  return io_internal::decode_tum_image_list(*text, path.string());
 }
 
-/// associate.py (TUM RGB-D tools): candidates |a - b| <= max_difference, greedy by difference,
-/// each stamp used once. Both lists sorted by stamp. Returns (rgb index, depth index) pairs
-/// sorted by colour stamp. Ties in the difference go to the earlier colour, then depth stamp.
-std::vector<std::pair<std::size_t, std::size_t>> associate(const std::vector<ListedImage>& rgb,
-                                                           const std::vector<ListedImage>& depth,
-                                                           double max_difference_s) {
-  struct Candidate {
-    double difference;
-    std::size_t a, b;
-  };
-  std::vector<Candidate> candidates;
-  std::size_t lo = 0;
-  for (std::size_t i = 0; i < rgb.size(); ++i) {
-    while (lo < depth.size() && depth[lo].t_s < rgb[i].t_s - max_difference_s) ++lo;
-    for (std::size_t j = lo; j < depth.size() && depth[j].t_s <= rgb[i].t_s + max_difference_s;
-         ++j) {
-      candidates.push_back({std::abs(rgb[i].t_s - depth[j].t_s), i, j});
-    }
-  }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-    if (x.difference != y.difference) return x.difference < y.difference;
-    if (x.a != y.a) return x.a < y.a;
-    return x.b < y.b;
-  });
-  std::vector<bool> used_a(rgb.size(), false), used_b(depth.size(), false);
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (const Candidate& c : candidates) {
-    if (used_a[c.a] || used_b[c.b]) continue;
-    used_a[c.a] = used_b[c.b] = true;
-    pairs.emplace_back(c.a, c.b);
-  }
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
-}
-
-/// intrinsics.txt: one line "fx fy cx cy" or "fx fy cx cy width height".
 Result<PinholeIntrinsics> read_intrinsics_file(const std::filesystem::path& path, bool& has_size) {
   Result<std::string> text = io_internal::read_file_bytes(path);
   if (!text) return text.error();
-  std::vector<double> v;
-  const Status read = io_internal::for_each_record(
-      *text, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
-        if (!v.empty()) {
-          return input_error(where(path, line_no) +
-                             "expected one line 'fx fy cx cy [width height]'");
-        }
-        if (fields.size() != 4 && fields.size() != 6) {
-          return input_error(where(path, line_no) + "expected 'fx fy cx cy [width height]', got " +
-                             std::to_string(fields.size()) + " fields");
-        }
-        for (const std::string_view f : fields) {
-          double x = 0.0;
-          if (!io_internal::parse_double(f, x)) {
-            return input_error(where(path, line_no) + "expected a number, got '" + std::string(f) +
-                               "'");
-          }
-          v.push_back(x);
-        }
-        if (!(v[0] > 0.0) || !(v[1] > 0.0)) {
-          return input_error(where(path, line_no) + "focal lengths fx and fy must be > 0 pixels");
-        }
-        if (v.size() == 6 && !(v[4] >= 1.0 && v[5] >= 1.0 && v[4] == std::floor(v[4]) &&
-                               v[5] == std::floor(v[5]) && v[4] <= 65535.0 && v[5] <= 65535.0)) {
-          return input_error(where(path, line_no) +
-                             "width and height must be positive whole pixels");
-        }
-        return Ok{};
-      });
-  if (!read) return read.error();
-  if (v.empty()) return input_error(path.string() + ": expected a line 'fx fy cx cy [width height]'");
-  PinholeIntrinsics k;
-  k.fx_px = v[0];
-  k.fy_px = v[1];
-  k.cx_px = v[2];
-  k.cy_px = v[3];
-  has_size = v.size() == 6;
-  if (has_size) {
-    k.width_px = static_cast<int>(v[4]);
-    k.height_px = static_cast<int>(v[5]);
-  }
-  return k;
+  return io_internal::decode_tum_intrinsics(*text, path.string(), has_size);
 }
 
-/// neck.txt: "t neck_pan_rad" per line.
 Result<std::vector<std::pair<double, double>>> read_neck_file(const std::filesystem::path& path) {
   Result<std::string> text = io_internal::read_file_bytes(path);
   if (!text) return text.error();
-  std::vector<std::pair<double, double>> out;
-  const Status read = io_internal::for_each_record(
-      *text, [&](int line_no, const std::vector<std::string_view>& fields) -> Status {
-        double t = 0.0, pan = 0.0;
-        if (fields.size() != 2 || !io_internal::parse_double(fields[0], t) ||
-            !io_internal::parse_double(fields[1], pan)) {
-          return input_error(where(path, line_no) + "expected 't neck_pan_rad' (two numbers)");
-        }
-        out.emplace_back(t, pan);
-        return Ok{};
-      });
-  if (!read) return read.error();
-  std::stable_sort(out.begin(), out.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  return out;
+  return io_internal::decode_tum_neck(*text, path.string());
 }
 
 /// Index of the sample nearest to t within max_difference_s in a list sorted by stamp; -1 if none.
@@ -315,8 +200,9 @@ Status write_contents(const std::filesystem::path& dir, const TumRgbdSequenceCon
     return s;
   }
   if (!c.ground_truth.empty()) {
-    std::string text = "# ground truth trajectory: T_world_camera of the optical frame\n"
-                       "# timestamp tx ty tz qx qy qz qw\n";
+    std::string text =
+        "# ground truth trajectory: T_world_camera of the optical frame\n"
+        "# timestamp tx ty tz qx qy qz qw\n";
     for (const StampedPose3& p : c.ground_truth) {
       const Eigen::Quaterniond q = p.orientation.normalized();
       std::snprintf(line, sizeof(line), "%.6f %.6f %.6f %.6f %.9f %.9f %.9f %.9f\n", p.t_s,

@@ -4,12 +4,14 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "internal/decoders.hpp"
+#include "internal/file_util.hpp"
+#include "internal/text_fields.hpp"
 #include "tessera/io/atomic_file.hpp"
 
 namespace tessera {
@@ -21,7 +23,7 @@ constexpr std::array<const char*, 8> kFieldNames = {"t", "x", "y", "z", "qx", "q
 constexpr double kUnitQuaternionTolerance = 0.01;
 
 /// Splits at spaces, tabs and commas (the TUM tools replace ',' and '\\t' by ' ').
-std::vector<std::string_view> split_fields(std::string_view line) {
+std::vector<std::string_view> split_tum_fields(std::string_view line) {
   std::vector<std::string_view> fields;
   std::size_t i = 0;
   while (i < line.size()) {
@@ -35,7 +37,7 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   return fields;
 }
 
-std::optional<double> parse_double(std::string_view text) {
+std::optional<double> parse_number(std::string_view text) {
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
   double value = 0.0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -63,22 +65,31 @@ Status write_tum_trajectory(const std::filesystem::path& path,
 }
 
 Result<std::vector<StampedPose3>> read_tum_trajectory3(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return input_error(path.string() + ": cannot open trajectory file");
+  Result<std::string> text = io_internal::read_file_bytes(path);
+  if (!text) return text.error();
+  return io_internal::decode_tum_trajectory3(*text, path.string());
+}
+
+namespace io_internal {
+
+Result<std::vector<StampedPose3>> decode_tum_trajectory3(std::string_view text,
+                                                         const std::string& name) {
   std::vector<StampedPose3> poses;
-  std::string line;
-  for (int line_no = 1; std::getline(in, line); ++line_no) {
+  LineCursor cursor(text);
+  std::string_view line;
+  int line_no = 0;
+  while (cursor.next(line, line_no)) {
     const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    const std::string where = path.string() + ":" + std::to_string(line_no) + ": ";
-    const std::vector<std::string_view> fields = split_fields(line);
+    if (first == std::string_view::npos || line[first] == '#') continue;
+    const std::string where = name + ":" + std::to_string(line_no) + ": ";
+    const std::vector<std::string_view> fields = split_tum_fields(line);
     if (fields.size() != kFieldNames.size()) {
       return input_error(where + "expected 8 fields 't x y z qx qy qz qw', got " +
                          std::to_string(fields.size()));
     }
     std::array<double, 8> v{};
     for (std::size_t k = 0; k < fields.size(); ++k) {
-      const std::optional<double> value = parse_double(fields[k]);
+      const std::optional<double> value = parse_number(fields[k]);
       if (!value || !std::isfinite(*value)) {
         return input_error(where + "field " + kFieldNames[k] + " must be a finite number, got '" +
                            std::string(fields[k]) + "'");
@@ -95,6 +106,8 @@ Result<std::vector<StampedPose3>> read_tum_trajectory3(const std::filesystem::pa
   }
   return poses;
 }
+
+}  // namespace io_internal
 
 Result<std::vector<StampedPose2>> read_tum_trajectory(const std::filesystem::path& path) {
   Result<std::vector<StampedPose3>> poses3 = read_tum_trajectory3(path);

@@ -77,10 +77,10 @@ Result<std::vector<std::filesystem::path>> list_texture_images(const std::filesy
   }
   if (ec) return input_error(folder.string() + ": cannot list: " + ec.message());
   if (files.empty()) {
-    return input_error(folder.string() + ": no .jpg, .jpeg or .png file" +
-                       (name_prefix.empty() ? std::string()
-                                            : " named '" + std::string(name_prefix) + "*'") +
-                       (recursive ? " in it or its sub-folders" : ""));
+    return input_error(
+        folder.string() + ": no .jpg, .jpeg or .png file" +
+        (name_prefix.empty() ? std::string() : " named '" + std::string(name_prefix) + "*'") +
+        (recursive ? " in it or its sub-folders" : ""));
   }
   std::sort(files.begin(), files.end(), natural_path_less);
   return files;

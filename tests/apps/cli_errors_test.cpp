@@ -144,4 +144,16 @@ TEST(CliErrors, CropWithoutFreeSpaceIsAnInputError) {
                      "m.yaml", "no free cell of the world inside it");
 }
 
+// Found by mutating real inputs: a number that overflows a double made nlohmann::json throw
+// out_of_range, which escaped the reader and aborted the program (exit 134).
+TEST(CliErrors, InfoOnHouseExpoWithAnOverflowingNumberIsOneInputErrorLine) {
+  TempDir dir;
+  support::write_bytes(dir / "plan.json",
+                       "{\"id\": \"x\",\n \"verts\": [[0, 0], [-1e3085, 1], [1, 1]]}\n");
+  const support::CliRun run = run_cli("info " + (dir.path() / "plan.json").string());
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  EXPECT_EQ(count_lines(run.output), 1) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("plan.json:2: JSON number out of range: '-1e3085'"));
+}
+
 }  // namespace tessera

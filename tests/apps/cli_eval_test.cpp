@@ -96,7 +96,7 @@ TEST(CliEval, UnreadableTrajectoryIsAnInputError) {
               (dir / "rel.txt").string());
   EXPECT_EQ(run.exit_code, 3) << run.output;
   EXPECT_EQ(count_lines(run.output), 1) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("missing.txt: cannot open"));
+  EXPECT_THAT(run.output, HasSubstr("missing.txt: no such file"));
 }
 
 TEST(CliEval, MalformedRelationsFileIsAnInputError) {

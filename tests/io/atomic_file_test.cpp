@@ -2,6 +2,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "io_test_util.hpp"
 
@@ -57,6 +59,27 @@ TEST(WriteFileAtomic, FailedRenameRemovesTheTemporaryAndKeepsTheTarget) {
   EXPECT_THAT(s.error().message, HasSubstr("target"));
   EXPECT_THAT(files_in(dir.path()), ElementsAre("target"));
   EXPECT_TRUE(std::filesystem::is_directory(dir / "target" / "inside"));
+}
+
+// The id of a process that has exited (and been reaped), as a killed writer leaves it.
+pid_t dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+TEST(WriteFileAtomic, RemovesTheTemporariesOfKilledWritersAndKeepsThoseOfLiveOnes) {
+  TempDir dir;
+  const std::string stale = ".map.png.tmp-" + std::to_string(dead_pid());
+  const std::string live = ".map.png.tmp-" + std::to_string(::getppid());
+  io_test::write_bytes(dir / stale, "half a picture");
+  io_test::write_bytes(dir / live, "another process is writing");
+  const std::string other = ".other.png.tmp-" + std::to_string(dead_pid());
+  io_test::write_bytes(dir / other, "another output's: left to its own next write");
+  ASSERT_TRUE(write_file_atomic(dir / "map.png", "picture"));
+  EXPECT_THAT(files_in(dir.path()), ElementsAre(live, other, "map.png"));
 }
 
 TEST(WriteFilesAtomic, WritesEveryFileOfTheGroup) {

@@ -55,6 +55,35 @@ TEST(ReadHouseExpoJson, SyntaxErrorNamesTheLine) {
   EXPECT_EQ(plan.error().message.find('\n'), std::string::npos);
 }
 
+// nlohmann::json reports a number that overflows a double with an out_of_range exception, which
+// once escaped the reader and aborted `tessera info` (exit 134).
+TEST(ReadHouseExpoJson, NumberThatOverflowsADoubleIsAnInputErrorWithTheLine) {
+  TempDir dir;
+  io_test::write_bytes(dir / "big.json", "{\"id\": \"x\",\n \"verts\": [[0, 0], [-1e3085, 1]]}\n");
+  Result<PolygonMap> plan = read_houseexpo_json(dir / "big.json");
+  ASSERT_FALSE(plan);
+  EXPECT_EQ(plan.error().kind, ErrorKind::kInput);
+  EXPECT_THAT(plan.error().message,
+              HasSubstr("big.json:2: JSON number out of range: '-1e3085' does not fit a double"));
+}
+
+TEST(ReadHouseExpoJson, NestingDeeperThanTheLimitIsAnInputError) {
+  TempDir dir;
+  io_test::write_bytes(dir / "deep.json", std::string(300, '[') + std::string(300, ']'));
+  Result<PolygonMap> plan = read_houseexpo_json(dir / "deep.json");
+  ASSERT_FALSE(plan);
+  EXPECT_THAT(plan.error().message, HasSubstr("deep.json: JSON nested deeper than 256 levels"));
+}
+
+TEST(ReadHouseExpoMap, VerticesTooFarApartForAGridAreAnInputError) {
+  TempDir dir;
+  io_test::write_bytes(dir / "far.json", R"({"verts": [[-1e300, 0], [1e300, 0], [0, 1e300]]})");
+  Result<OccupancyGrid> g = read_houseexpo_map(dir / "far.json", 0.05);
+  ASSERT_FALSE(g);
+  EXPECT_THAT(g.error().message, HasSubstr("far.json: a "));
+  EXPECT_THAT(g.error().message, HasSubstr("is too large"));
+}
+
 TEST(ReadHouseExpoJson, MissingVertsIsAnError) {
   TempDir dir;
   io_test::write_bytes(dir / "nv.json", R"({"id": "x", "bbox": {}})");

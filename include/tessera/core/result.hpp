@@ -17,7 +17,13 @@ struct Error {
   std::string message;
 };
 
+/// An input error. Input errors quote what they found in the file, so control characters (bytes
+/// below 0x20 and 0x7f: a line break inside a quoted YAML string, a damaged PNG chunk name) become
+/// '?', which keeps the message one line and keeps terminal escapes out of it.
 [[nodiscard]] inline Error input_error(std::string message) {
+  for (char& c : message) {
+    if ((c >= 0 && c < 0x20) || c == 0x7f) c = '?';
+  }
   return {ErrorKind::kInput, std::move(message)};
 }
 [[nodiscard]] inline Error usage_error(std::string message) {

@@ -1,7 +1,9 @@
 #pragma once
 // Writing outputs so that a failed run never leaves a half-written file (../shared/DESIGN.md): the
-// bytes go to "<name>.tmp-<pid>" in the destination's folder, are flushed to disk, and the
-// temporary is renamed over the destination (POSIX rename(2) is atomic within one file system).
+// bytes go to the hidden ".<name>.tmp-<pid>" in the destination's folder, are flushed to disk, and
+// the temporary is renamed over the destination (POSIX rename(2) is atomic within one file system).
+// A process killed while writing (SIGKILL) leaves the destination as it was, old or new, plus at
+// most its hidden temporary, which the next write of the same destination removes.
 #include <filesystem>
 #include <span>
 #include <string_view>

@@ -15,8 +15,9 @@ namespace tessera::io_internal {
 /// True when `bytes` start with the PNG signature (PNG specification section 5.2).
 [[nodiscard]] bool looks_like_png(const std::string& bytes);
 
-/// cv::imdecode(bytes, flags) with OpenCV's exceptions caught: an empty matrix when it cannot
-/// decode the bytes.
+/// cv::imdecode(bytes, flags) with OpenCV's exceptions caught and its log silenced: an empty
+/// matrix when it cannot decode the bytes or they are no PNG, JPEG, BMP or Netpbm file
+/// (is_supported_image, image_header.hpp).
 [[nodiscard]] cv::Mat imdecode_or_empty(const std::string& bytes, int flags);
 
 /// Whether read_image_file checks a PNG's chunk structure (png_structure_problem, raw_image.hpp)

@@ -31,6 +31,9 @@ struct RawImage {
 /// to 8 bits. kInput errors name the file.
 [[nodiscard]] Result<RawImage> read_raw_image(const std::filesystem::path& path);
 
+/// read_raw_image on the file's bytes; `name` is the file named in errors.
+[[nodiscard]] Result<RawImage> decode_raw_image(const std::string& bytes, const std::string& name);
+
 /// Grey = round(mean(R, G, B)).
 [[nodiscard]] GrayImage to_gray(const RawImage& image);
 

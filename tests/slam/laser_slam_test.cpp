@@ -22,18 +22,24 @@ namespace {
 /// suite also runs under AddressSanitizer. The run starts next to a wall with beams 2 degrees
 /// apart: without joining neighbouring returns in the submaps (RangeInsertOptions) its first
 /// matches snapped to the beam spacing and the whole map came out turned by 1.5 degrees.
+SimulatedLaserRun simulate_office(double scan_rate_hz, const OdometryErrorOptions& odometry) {
+  const World office = builtin_world("office", 0.1);
+  LaserRunOptions o;
+  o.lidar.beams = 180;
+  o.lidar.max_range_m = 10.0;
+  o.scan_rate_hz = scan_rate_hz;
+  o.max_duration_s = 70.0;
+  o.odometry = odometry;
+  Result<SimulatedLaserRun> r = simulate_laser_run(office, o, 7);
+  EXPECT_TRUE(r.ok()) << r.error().message;
+  return std::move(r).value();
+}
+
 const SimulatedLaserRun& office_run() {
   static const SimulatedLaserRun run = [] {
-    const World office = builtin_world("office", 0.1);
-    LaserRunOptions o;
-    o.lidar.beams = 180;
-    o.lidar.max_range_m = 10.0;
-    o.scan_rate_hz = 5.0;
-    o.max_duration_s = 70.0;
-    o.odometry.heading_drift_rad_per_m = 0.01;
-    Result<SimulatedLaserRun> r = simulate_laser_run(office, o, 7);
-    EXPECT_TRUE(r.ok()) << r.error().message;
-    return std::move(r).value();
+    OdometryErrorOptions odometry;
+    odometry.heading_drift_rad_per_m = 0.01;
+    return simulate_office(5.0, odometry);
   }();
   return run;
 }
@@ -92,17 +98,10 @@ TEST(LaserSlam, SimulatedLoopEndsFarCloserToTheTruthThanOdometry) {
 // between node and submap the loop is found, verified and closed; with a fixed window it is not.
 TEST(LaserSlam, LoopAfterDriftBeyondTheBaseWindowIsClosedByTheGrowingWindow) {
   static const SimulatedLaserRun run = [] {
-    const World office = builtin_world("office", 0.1);
-    LaserRunOptions o;
-    o.lidar.beams = 180;
-    o.lidar.max_range_m = 10.0;
-    o.scan_rate_hz = 2.0;
-    o.max_duration_s = 70.0;
-    o.odometry.heading_drift_rad_per_m = 0.02;
-    o.odometry.distance_scale_error = 0.05;
-    Result<SimulatedLaserRun> r = simulate_laser_run(office, o, 7);
-    EXPECT_TRUE(r.ok()) << r.error().message;
-    return std::move(r).value();
+    OdometryErrorOptions odometry;
+    odometry.heading_drift_rad_per_m = 0.02;
+    odometry.distance_scale_error = 0.05;
+    return simulate_office(2.0, odometry);
   }();
   LaserSlamOptions o;
   o.submaps.travel_per_submap_m = 5.0;

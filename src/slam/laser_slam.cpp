@@ -450,7 +450,12 @@ struct LaserSlam::Impl {
     const Pose2 correction = local_to_global();
     const int submaps_before = submaps.size();
     const ActiveSubmaps::Insertion insertion = submaps.insert(points, T_local);
-    if (!nodes.empty()) travel_m += (T_local.translation() - nodes.back().T_local_robot.translation()).norm();
+    // The step from the previous node: it lengthens the path and loosens the local constraints
+    // (a scan matched a metre after the last one is less certain than one matched 0.2 m after it).
+    const double step_m =
+        nodes.empty() ? 0.0
+                      : (T_local.translation() - nodes.back().T_local_robot.translation()).norm();
+    travel_m += step_m;
     for (int id = submaps_before; id < submaps.size(); ++id) {
       SubmapRecord record;
       record.travel_first_m = travel_m;
@@ -470,10 +475,6 @@ struct LaserSlam::Impl {
     node.loop_points = adaptive_voxel_filter(points.returns_m, options.loop_points);
     node.points = std::move(points);
     node.submaps = insertion.inserted_into;
-    // Both kinds of local constraint loosen with the step from the previous node: a scan matched
-    // a metre after the last one is less certain than one matched 0.2 m after it.
-    const double step_m =
-        nodes.empty() ? 0.0 : (T_local.translation() - nodes.back().T_local_robot.translation()).norm();
     const Eigen::Matrix3d submap_information =
         information_of(grown(options.submap_sigmas, options.local_sigmas_per_m, step_m));
     for (const int id : insertion.inserted_into) {

@@ -111,6 +111,9 @@ const std::map<std::string, Setter>& setters() {
       {"verify_m", [](auto& o, double v) { o.verify_tolerance.linear_m = v; }},
       {"verify_rad", [](auto& o, double v) { o.verify_tolerance.angular_rad = v; }},
       {"outlier_sigmas", [](auto& o, double v) { o.loop_outlier_sigmas = v; }},
+      {"wrong_share", [](auto& o, double v) { o.wrong_closure_share = v; }},
+      {"wrong_seed",
+       [](auto& o, double v) { o.wrong_closure_seed = static_cast<std::uint64_t>(v); }},
       {"huber_scale", [](auto& o, double v) { o.huber_scale = v; }},
   };
   return kSetters;
@@ -296,10 +299,11 @@ int run(int argc, char** argv) {
   print_metric("full SLAM", result->trajectory, *relations, time_offset_s);
   std::printf(
       "nodes %d  submaps %d  loop searches %d (global %d)  loop closures %d  optimisations %d  "
-      "edges %zu  max loop correction %.3f m %.4f rad  candidates %d unverified %d rejected %d\n",
+      "edges %zu  max loop correction %.3f m %.4f rad  candidates %d unverified %d rejected %d wrong injected %d\n",
       st.nodes, st.submaps, st.loop_searches, st.global_searches, st.loop_closures,
       st.optimizations, result->graph.edges.size(), st.max_loop_correction_m,
-      st.max_loop_correction_rad, st.loop_candidates, st.loop_unverified, st.loop_rejected);
+      st.max_loop_correction_rad, st.loop_candidates, st.loop_unverified, st.loop_rejected,
+      st.loop_wrong_injected);
   {
     // Loop constraints the final graph disagrees with: outliers the robust loss had to absorb.
     int robust = 0, off_10cm = 0, off_50cm = 0;

@@ -11,8 +11,12 @@
 #include <limits>
 #include <queue>
 
+#include "tessera/core/rng.hpp"
+
 namespace tessera::slam {
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 Eigen::Matrix3d information_of(const ConstraintSigmas& s) {
   Eigen::Matrix3d info = Eigen::Matrix3d::Zero();
@@ -107,6 +111,9 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
     return "verify_tolerance must be > 0";
   }
   if (!(o.loop_outlier_sigmas >= 0.0)) return "loop_outlier_sigmas must be >= 0";
+  if (!(o.wrong_closure_share >= 0.0 && o.wrong_closure_share <= 1.0)) {
+    return "wrong_closure_share must be in [0, 1]";
+  }
   if (o.optimize_every_n_nodes < 1) return "optimize_every_n_nodes must be >= 1";
   if (o.optimizer_iterations < 1) return "optimizer_iterations must be >= 1";
   if (auto p = validate(o.local_sigmas, "local_sigmas")) return p;
@@ -151,13 +158,15 @@ struct LaserSlam::Impl {
         submaps(o.submaps),
         filter(o.motion_filter),
         closer(o.loop_closer),
-        loop_information(information_of(o.loop_sigmas)) {}
+        loop_information(information_of(o.loop_sigmas)),
+        wrong_closures(o.wrong_closure_seed) {}
 
   LaserSlamOptions options;
   ActiveSubmaps submaps;
   MotionFilter filter;
   LoopCloser closer;
   Eigen::Matrix3d loop_information;
+  Rng wrong_closures;  // draws for wrong_closure_share
 
   PoseGraph graph;
   std::vector<int> vertex_scan;
@@ -268,7 +277,18 @@ struct LaserSlam::Impl {
       // Plus a floor of 1 m / 1 rad sigma so that the matrix stays positive definite.
       information = options.loop_hessian_scale * match.hessian + Eigen::Matrix3d::Identity();
     }
-    graph.edges.push_back({record.vertex, node.vertex, match.T_submap_robot, information, true});
+    Pose2 T_submap_robot = match.T_submap_robot;
+    if (options.wrong_closure_share > 0.0 &&
+        wrong_closures.uniform(0.0, 1.0) < options.wrong_closure_share) {
+      const double direction = wrong_closures.uniform(-kPi, kPi);
+      const double distance_m = wrong_closures.uniform(1.0, 4.0);
+      const double turn_rad = wrong_closures.uniform(0.2, 1.0) * (direction < 0.0 ? -1.0 : 1.0);
+      T_submap_robot = T_submap_robot * Pose2{distance_m * std::cos(direction),
+                                              distance_m * std::sin(direction), turn_rad};
+      T_submap_robot.theta = normalize_angle(T_submap_robot.theta);
+      ++stats.loop_wrong_injected;
+    }
+    graph.edges.push_back({record.vertex, node.vertex, T_submap_robot, information, true});
     ++stats.loop_closures;
     ++loop_constraints_since_optimization;
     for (const int h : node.submaps) {
@@ -397,13 +417,16 @@ struct LaserSlam::Impl {
     return removed;
   }
 
-  Status optimize_graph() {
+  /// `last`: the final optimisation, the only one after which outliers are switched off (earlier,
+  /// a correct closure after a long drift can still be far from a graph that has not yet taken
+  /// it in).
+  Status optimize_graph(bool last) {
     const auto t0 = std::chrono::steady_clock::now();
     OptimizeOptions o;
     o.max_iterations = options.optimizer_iterations;
     o.huber_scale = options.huber_scale;
     Result<OptimizeSummary> summary = optimize(graph, o);
-    if (summary && switch_off_outliers() > 0) summary = optimize(graph, o);
+    if (summary && last && switch_off_outliers() > 0) summary = optimize(graph, o);
     stats.optimization_s += seconds_since(t0);
     if (!summary) return summary.error();
     ++stats.optimizations;
@@ -512,7 +535,7 @@ struct LaserSlam::Impl {
 
     if (nodes_since_optimization >= options.optimize_every_n_nodes &&
         loop_constraints_since_optimization > 0) {
-      if (Status s = optimize_graph(); !s) return s;
+      if (Status s = optimize_graph(false); !s) return s;
     }
     report(scan_index + 1, scans_total);
     return Ok{};
@@ -531,7 +554,7 @@ struct LaserSlam::Impl {
 
   Result<LaserSlamResult> finish() {
     if (stats.loop_closures > 0) {
-      if (Status s = optimize_graph(); !s) return s.error();
+      if (Status s = optimize_graph(true); !s) return s.error();
     }
     LaserSlamResult out;
     out.trajectory.reserve(scans.size());

@@ -139,6 +139,27 @@ TEST(LaserSlam, LoopAfterDriftBeyondTheBaseWindowIsClosedByTheGrowingWindow) {
   EXPECT_LE(growing_error, fixed_error);
 }
 
+// Issue 17: wrong loop closures must not bend the map. A third of the accepted constraints are
+// replaced by constraints 1-4 m and 0.2-1 rad off; the robust loss holds them during the run and
+// the final optimisation switches them off, so the trajectory stays where the clean run has it.
+TEST(LaserSlam, WrongLoopClosuresAreSwitchedOffAndCounted) {
+  const SimulatedLaserRun& run = office_run();
+  const Result<LaserSlamResult> clean = run_laser_slam(run.log, small_submaps());
+  LaserSlamOptions o = small_submaps();
+  o.wrong_closure_share = 0.3;
+  o.wrong_closure_seed = 3;
+  const Result<LaserSlamResult> wrong = run_laser_slam(run.log, o);
+  ASSERT_TRUE(clean.ok() && wrong.ok());
+  const double clean_error = mean_position_error(clean->trajectory, run.truth);
+  const double wrong_error = mean_position_error(wrong->trajectory, run.truth);
+  std::printf("mean error clean %.3f m, with %d wrong closures %.3f m; %d switched off\n",
+              clean_error, wrong->stats.loop_wrong_injected, wrong_error,
+              wrong->stats.loop_rejected);
+  EXPECT_GT(wrong->stats.loop_wrong_injected, 5);
+  EXPECT_GE(wrong->stats.loop_rejected, wrong->stats.loop_wrong_injected);
+  EXPECT_LT(wrong_error, 1.1 * clean_error + 0.005);
+}
+
 // No randomness and one thread: the same log gives the same trajectory to the last bit.
 TEST(LaserSlam, RunsAreDeterministic) {
   LaserLog log = office_run().log;

@@ -1,7 +1,7 @@
 #include "commands.hpp"
 #include "tessera/io/map_file.hpp"
 #include "tessera/io/map_yaml.hpp"
-#include "tessera/io/render.hpp"
+#include "tessera/render/render.hpp"
 
 namespace tessera::cli {
 

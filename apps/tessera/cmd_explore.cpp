@@ -9,9 +9,9 @@
 #include "tessera/io/exploration_report.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
-#include "tessera/io/render.hpp"
 #include "tessera/io/tum_trajectory.hpp"
 #include "tessera/mission/exploration_mission.hpp"
+#include "tessera/render/render.hpp"
 
 namespace tessera::cli {
 

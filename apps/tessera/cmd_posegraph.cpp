@@ -9,7 +9,7 @@
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/g2o_file.hpp"
 #include "tessera/io/json_file.hpp"
-#include "tessera/slam/pose_graph.hpp"
+#include "tessera/posegraph/pose_graph.hpp"
 
 namespace tessera::cli {
 
@@ -21,7 +21,7 @@ PosegraphCommand::PosegraphCommand(CLI::App& app) {
       "Optimise a 2D pose graph (VERTEX_SE2/EDGE_SE2 g2o; a file of edges only gets its initial "
       "poses by chaining the odometry edges) with Ceres; writes the optimised graph and a "
       "report.json");
-  iterations_ = slam::OptimizeOptions{}.max_iterations;
+  iterations_ = posegraph::OptimizeOptions{}.max_iterations;
   optimize_->add_option("in", in_, "Input pose graph (.g2o)")->required();
   optimize_->add_option("out", out_, "Output pose graph (.g2o)")->required();
   optimize_->add_option("--report", report_,
@@ -39,14 +39,14 @@ int PosegraphCommand::run() const {
   if (report_path == out_) {
     return report_error(usage_error(out_.string() + ": the report would overwrite the graph"));
   }
-  Result<slam::PoseGraph> graph = read_g2o(in_);
+  Result<posegraph::PoseGraph> graph = read_g2o(in_);
   if (!graph) return report_error(graph.error());
 
-  slam::OptimizeOptions options;
+  posegraph::OptimizeOptions options;
   options.max_iterations = iterations_;
-  const Result<slam::OptimizeSummary> optimized = slam::optimize(*graph, options);
+  const Result<posegraph::OptimizeSummary> optimized = posegraph::optimize(*graph, options);
   if (!optimized) return report_error(optimized.error());
-  const slam::OptimizeSummary& s = *optimized;
+  const posegraph::OptimizeSummary& s = *optimized;
   const double wall_s = seconds_since(start);
 
   const nlohmann::json report = {{"tessera_version", TESSERA_VERSION},

@@ -14,7 +14,7 @@
 #include "tessera/core/angle.hpp"
 #include "tessera/eval/map_accuracy.hpp"
 #include "tessera/eval/relation_metric.hpp"
-#include "tessera/eval/stamped_pose3.hpp"
+#include "tessera/trajectory/stamped_pose3.hpp"
 #include "tessera/eval/trajectory_error.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/carmen_log.hpp"
@@ -23,7 +23,7 @@
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/relations_file.hpp"
-#include "tessera/io/render.hpp"
+#include "tessera/render/render.hpp"
 #include "tessera/io/robot_bag.hpp"
 #include "tessera/io/tum_trajectory.hpp"
 #include "tessera/sim/laser_run.hpp"
@@ -80,7 +80,8 @@ Result<SimulationScore> score_simulation(const SimulatedLaserRun& run, const Wor
   score.odometry_ate_m = odometry_ate->trans_m.rmse;
   // The map lives in the SLAM trajectory's frame: align it as the ATE aligns the trajectory.
   score.T_truth_map = planar(slam_ate->T_reference_estimate);
-  score.map = compare_to_truth_at_centres(r.map, world, score.T_truth_map);
+  score.map = compare_to_truth_at_centres(r.map, TruthGrid(world.geometry(), world.solid_cells()),
+                                          score.T_truth_map);
   return score;
 }
 

@@ -142,7 +142,7 @@ class PosegraphCommand : public Command {
   std::filesystem::path in_;
   std::filesystem::path out_;
   std::optional<std::filesystem::path> report_;
-  int iterations_ = 0;  // set from slam::OptimizeOptions in the constructor
+  int iterations_ = 0;  // set from posegraph::OptimizeOptions in the constructor
   bool quiet_ = false;
 };
 

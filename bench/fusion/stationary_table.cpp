@@ -15,7 +15,8 @@
 #include "table_data_dir.hpp"
 #include "tessera/fusion/stationary_matching.hpp"
 #include "tessera/io/tum_rgbd_sequence.hpp"
-#include "tessera/io/wall_textures.hpp"
+#include "tessera/render/simulated_rgbd_sequence.hpp"
+#include "tessera/render/wall_textures.hpp"
 #include "tessera/sim/stationary_scene.hpp"
 
 int main(int argc, char** argv) {

@@ -13,7 +13,7 @@
 #include <numbers>
 #include <vector>
 
-#include "tessera/io/wall_textures.hpp"
+#include "tessera/render/wall_textures.hpp"
 #include "tessera/sim/builtin_world.hpp"
 #include "tessera/sim/rgbd_camera.hpp"
 

@@ -28,7 +28,7 @@
 #include "tessera/eval/relation_metric.hpp"
 #include "tessera/io/carmen_log.hpp"
 #include "tessera/io/relations_file.hpp"
-#include "tessera/io/render.hpp"
+#include "tessera/render/render.hpp"
 #include "tessera/io/tum_trajectory.hpp"
 #include "tessera/slam/laser_slam.hpp"
 
@@ -307,7 +307,7 @@ int run(int argc, char** argv) {
   {
     // Loop constraints the final graph disagrees with: outliers the robust loss had to absorb.
     int robust = 0, off_10cm = 0, off_50cm = 0;
-    for (const slam::PoseGraphEdge& e : result->graph.edges) {
+    for (const posegraph::PoseGraphEdge& e : result->graph.edges) {
       if (!e.robust) continue;
       ++robust;
       const Pose2 err = between(between(result->graph.poses[static_cast<std::size_t>(e.from)],

@@ -18,22 +18,12 @@ double coverage(const OccupancyGrid& map, std::span<const std::uint8_t> reachabl
   return total == 0 ? 0.0 : static_cast<double>(covered) / static_cast<double>(total);
 }
 
-double coverage(const OccupancyGrid& map, const World& truth, Cell start, double free_below) {
-  TESSERA_ASSERT(map.geometry().width() == truth.geometry().width() &&
-                 map.geometry().height() == truth.geometry().height());
-  const std::vector<std::uint8_t> reachable = truth.reachable_from(start);
-  return coverage(map, reachable, free_below);
-}
-
 CoverageTracker::CoverageTracker(std::vector<std::uint8_t> reachable, double free_below)
     : reachable_(std::move(reachable)),
       covered_(reachable_.size(), 0),
       free_below_log_odds_(log_odds(free_below)),
       reachable_count_(static_cast<std::size_t>(std::count_if(
           reachable_.begin(), reachable_.end(), [](std::uint8_t r) { return r != 0; }))) {}
-
-CoverageTracker::CoverageTracker(const World& truth, Cell start, double free_below)
-    : CoverageTracker(truth.reachable_from(start), free_below) {}
 
 void CoverageTracker::reset(const OccupancyGrid& map) {
   const GridGeometry& g = map.geometry();

@@ -35,14 +35,14 @@ MapAccuracy count_against(const OccupancyGrid& map, double occupied_threshold,
 
 }  // namespace
 
-MapAccuracy compare_to_truth(const OccupancyGrid& map, const World& truth,
+MapAccuracy compare_to_truth(const OccupancyGrid& map, const TruthGrid& truth,
                              double occupied_threshold) {
   TESSERA_ASSERT(map.geometry().width() == truth.geometry().width() &&
                  map.geometry().height() == truth.geometry().height());
   return count_against(map, occupied_threshold, [&](Cell c) { return truth.solid(c); });
 }
 
-MapAccuracy compare_to_truth_at_centres(const OccupancyGrid& map, const World& truth,
+MapAccuracy compare_to_truth_at_centres(const OccupancyGrid& map, const TruthGrid& truth,
                                         const Pose2& T_truth_map, double occupied_threshold) {
   const GridGeometry& g = map.geometry();
   const GridGeometry& w = truth.geometry();

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "tessera/core/assert.hpp"
-#include "tessera/slam/pose_graph.hpp"
+#include "tessera/posegraph/pose_graph.hpp"
 
 namespace tessera::fusion {
 namespace {
@@ -174,12 +174,12 @@ void FusionSlam::add_match_edge(std::size_t from, std::size_t to, const Pose2& T
 }
 
 bool FusionSlam::optimise() {
-  slam::PoseGraph graph;
+  posegraph::PoseGraph graph;
   graph.poses = poses_;
   graph.ids.resize(poses_.size());
   for (std::size_t i = 0; i < poses_.size(); ++i) graph.ids[i] = static_cast<int>(i);
   for (const Edge& e : edges_) {
-    slam::PoseGraphEdge g;
+    posegraph::PoseGraphEdge g;
     g.from = static_cast<int>(e.from);
     g.to = static_cast<int>(e.to);
     g.measurement = e.measurement;
@@ -189,10 +189,10 @@ bool FusionSlam::optimise() {
     g.robust = e.match;
     graph.edges.push_back(g);
   }
-  slam::OptimizeOptions oo;
+  posegraph::OptimizeOptions oo;
   oo.huber_scale = options_.huber_scale;
   oo.fixed_nodes = {0};
-  const Result<slam::OptimizeSummary> summary = slam::optimize(graph, oo);
+  const Result<posegraph::OptimizeSummary> summary = posegraph::optimize(graph, oo);
   if (!summary) return false;
   poses_ = graph.poses;
   ++stats_.optimisations;

@@ -22,7 +22,7 @@ using io_internal::format_double;
 struct RawEdge {
   int from_id = 0;
   int to_id = 0;
-  slam::PoseGraphEdge edge;
+  posegraph::PoseGraphEdge edge;
   int line_no = 0;
 };
 
@@ -43,7 +43,8 @@ Eigen::Matrix3d information_from_upper(const std::array<double, 6>& u) {
 
 /// Turns edge ids into node indices when the file has VERTEX_SE2 lines.
 Status resolve_with_vertices(const std::string& file, const std::vector<RawEdge>& raw,
-                             const std::unordered_map<int, int>& index_of, slam::PoseGraph& g) {
+                             const std::unordered_map<int, int>& index_of,
+                             posegraph::PoseGraph& g) {
   for (const RawEdge& r : raw) {
     for (int id : {r.from_id, r.to_id}) {
       if (!index_of.contains(id)) {
@@ -51,7 +52,7 @@ Status resolve_with_vertices(const std::string& file, const std::vector<RawEdge>
                            std::to_string(id) + ", which has no VERTEX_SE2 line");
       }
     }
-    slam::PoseGraphEdge e = r.edge;
+    posegraph::PoseGraphEdge e = r.edge;
     e.from = index_of.at(r.from_id);
     e.to = index_of.at(r.to_id);
     g.edges.push_back(e);
@@ -62,7 +63,7 @@ Status resolve_with_vertices(const std::string& file, const std::vector<RawEdge>
 /// Edges only (M3500): the nodes are the edge ids in ascending order, the first at the origin and
 /// each next one placed by the odometry edge from the id before it.
 Status resolve_by_chaining(const std::string& file, const std::vector<RawEdge>& raw,
-                           slam::PoseGraph& g) {
+                           posegraph::PoseGraph& g) {
   std::unordered_map<int, int> first_line;              // where each id first appears, for errors
   std::unordered_map<int, const RawEdge*> odometry_to;  // id -> the first edge id-1 -> id
   for (const RawEdge& r : raw) {
@@ -96,7 +97,7 @@ Status resolve_by_chaining(const std::string& file, const std::vector<RawEdge>& 
 
 }  // namespace
 
-Result<slam::PoseGraph> read_g2o(const std::filesystem::path& path) {
+Result<posegraph::PoseGraph> read_g2o(const std::filesystem::path& path) {
   Result<std::string> bytes = io_internal::read_file_bytes(path);
   if (!bytes) return bytes.error();
   return io_internal::decode_g2o(*bytes, path.string());
@@ -104,8 +105,8 @@ Result<slam::PoseGraph> read_g2o(const std::filesystem::path& path) {
 
 namespace io_internal {
 
-Result<slam::PoseGraph> decode_g2o(std::string_view text, const std::string& file) {
-  slam::PoseGraph graph;
+Result<posegraph::PoseGraph> decode_g2o(std::string_view text, const std::string& file) {
+  posegraph::PoseGraph graph;
   std::unordered_map<int, int> index_of;     // g2o id -> node index
   std::unordered_map<int, int> vertex_line;  // g2o id -> line of its VERTEX_SE2
   std::vector<RawEdge> raw;
@@ -180,7 +181,7 @@ Result<slam::PoseGraph> decode_g2o(std::string_view text, const std::string& fil
 
 }  // namespace io_internal
 
-std::string encode_g2o(const slam::PoseGraph& graph) {
+std::string encode_g2o(const posegraph::PoseGraph& graph) {
   TESSERA_ASSERT(graph.ids.empty() || graph.ids.size() == graph.poses.size());
   const auto id_of = [&](int node) {
     return graph.ids.empty() ? node : graph.ids[static_cast<std::size_t>(node)];
@@ -192,7 +193,7 @@ std::string encode_g2o(const slam::PoseGraph& graph) {
            " " + format_double(p.y) + " " + format_double(p.theta) + "\n";
   }
   const int n = static_cast<int>(graph.poses.size());
-  for (const slam::PoseGraphEdge& e : graph.edges) {
+  for (const posegraph::PoseGraphEdge& e : graph.edges) {
     TESSERA_ASSERT(0 <= e.from && e.from < n && 0 <= e.to && e.to < n);
     const Pose2& z = e.measurement;
     const Eigen::Matrix3d& I = e.information;
@@ -204,7 +205,7 @@ std::string encode_g2o(const slam::PoseGraph& graph) {
   return out;
 }
 
-Status write_g2o(const std::filesystem::path& path, const slam::PoseGraph& graph) {
+Status write_g2o(const std::filesystem::path& path, const posegraph::PoseGraph& graph) {
   return write_file_atomic(path, encode_g2o(graph));
 }
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "internal/bob_body.hpp"
-#include "tessera/mission/bob_explorer_port.hpp"
+#include "tessera/sim/bob_explorer_port.hpp"
 #include "tessera/bob/final_map.hpp"
 #include "tessera/bob/packed_map.hpp"
 #include "tessera/core/angle.hpp"

@@ -351,7 +351,7 @@ Result<ExplorationResult> run_exploration(
   if (m.coverage_over_time.back().step != step) {
     m.coverage_over_time.push_back({step, path_m, coverage.coverage()});
   }
-  out.accuracy = compare_to_truth(map, world);
+  out.accuracy = compare_to_truth(map, TruthGrid(world.geometry(), world.solid_cells()));
   out.frontier_left = frontier.cells();
   out.blacklisted_targets = explorer.blacklisted_cells();
   // Frontier cells no robot can reach through known free cells. One full search per connected group

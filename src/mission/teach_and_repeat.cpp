@@ -8,7 +8,7 @@
 #include <unordered_map>
 #include <utility>
 
-#include "tessera/eval/stamped_pose3.hpp"
+#include "tessera/trajectory/stamped_pose3.hpp"
 #include "tessera/eval/trajectory_error.hpp"
 #include "tessera/nav/cell_polyline.hpp"
 #include "tessera/nav/process_state_machine.hpp"
@@ -503,7 +503,7 @@ Result<TeachAndRepeatResult> run_teach_and_repeat(
         // (Re)plan over the learned cells from the current estimate: the wavefront as written
         // (thesis 4.3.5), then the non-zigzag polyline (6.2 item 3).
         seen_corrections = x.corrections;
-        const CellGraph graph = slam.map().graph(CellAdjacency::kTraversed);
+        const CellGraph graph = slam.map().graph(fusion::CellAdjacency::kTraversed);
         const WavefrontField field = wavefront(graph, run.goal_cell);
         const Pose2 p = slam.estimate();
         const std::size_t here = graph.nearest({p.x, p.y});

@@ -168,7 +168,7 @@ struct LaserSlam::Impl {
   Eigen::Matrix3d loop_information;
   Rng wrong_closures;  // draws for wrong_closure_share
 
-  PoseGraph graph;
+  posegraph::PoseGraph graph;
   std::vector<int> vertex_scan;
   std::vector<Node> nodes;
   std::vector<SubmapRecord> submap_records;
@@ -406,7 +406,7 @@ struct LaserSlam::Impl {
     if (options.loop_outlier_sigmas <= 0.0) return 0;
     const double gate = options.loop_outlier_sigmas * options.loop_outlier_sigmas;
     const std::size_t before = graph.edges.size();
-    std::erase_if(graph.edges, [&](const PoseGraphEdge& e) {
+    std::erase_if(graph.edges, [&](const posegraph::PoseGraphEdge& e) {
       if (!e.robust) return false;
       const Pose2 error = between(between(global_pose(e.from), global_pose(e.to)), e.measurement);
       const Eigen::Vector3d r(error.x, error.y, error.theta);
@@ -422,11 +422,11 @@ struct LaserSlam::Impl {
   /// it in).
   Status optimize_graph(bool last) {
     const auto t0 = std::chrono::steady_clock::now();
-    OptimizeOptions o;
+    posegraph::OptimizeOptions o;
     o.max_iterations = options.optimizer_iterations;
     o.huber_scale = options.huber_scale;
-    Result<OptimizeSummary> summary = optimize(graph, o);
-    if (summary && last && switch_off_outliers() > 0) summary = optimize(graph, o);
+    Result<posegraph::OptimizeSummary> summary = posegraph::optimize(graph, o);
+    if (summary && last && switch_off_outliers() > 0) summary = posegraph::optimize(graph, o);
     stats.optimization_s += seconds_since(t0);
     if (!summary) return summary.error();
     ++stats.optimizations;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tessera/core/rng.hpp"
+#include "tessera/sim/world.hpp"
 
 namespace tessera {
 namespace {
@@ -29,16 +30,17 @@ TEST(Coverage, CountsOnlyReachableCellsKnownAsFree) {
   map.set_probability({0, 1}, 0.1);  // reachable, free
   map.set_probability({1, 1}, 0.9);  // reachable but believed occupied: not covered
   map.set_probability({3, 1}, 0.1);  // free but in the other part
-  EXPECT_DOUBLE_EQ(coverage(map, truth, {0, 2}), 0.25);
-  EXPECT_DOUBLE_EQ(coverage(map, truth, {4, 0}), 1.0 / 6.0);
-  EXPECT_DOUBLE_EQ(coverage(map, truth, {2, 0}), 0.0);  // solid start: nothing reachable
+  EXPECT_DOUBLE_EQ(coverage(map, truth.reachable_from({0, 2})), 0.25);
+  EXPECT_DOUBLE_EQ(coverage(map, truth.reachable_from({4, 0})), 1.0 / 6.0);
+  // Solid start: nothing reachable.
+  EXPECT_DOUBLE_EQ(coverage(map, truth.reachable_from({2, 0})), 0.0);
 }
 
 TEST(CoverageTracker, IncrementalCountEqualsFullCountUnderRandomUpdates) {
   const World truth = split_world();
   Rng rng(5);
   OccupancyGrid map(truth.geometry());
-  CoverageTracker tracker(truth, {4, 2});
+  CoverageTracker tracker(truth.reachable_from({4, 2}));
   EXPECT_EQ(tracker.reachable_cells(), 6u);
   EXPECT_EQ(tracker.covered_cells(), 0u);
   for (int step = 0; step < 500; ++step) {
@@ -50,7 +52,8 @@ TEST(CoverageTracker, IncrementalCountEqualsFullCountUnderRandomUpdates) {
     }
     const std::vector<Cell> touched{c, c, {-1, 0}};
     tracker.update(map, touched);
-    ASSERT_DOUBLE_EQ(tracker.coverage(), coverage(map, truth, {4, 2})) << "step " << step;
+    ASSERT_DOUBLE_EQ(tracker.coverage(), coverage(map, truth.reachable_from({4, 2})))
+        << "step " << step;
   }
   CoverageTracker fresh(truth.reachable_from({4, 2}));
   fresh.reset(map);

@@ -9,12 +9,11 @@ namespace tessera {
 namespace {
 
 // 4 x 1 truth: free, solid, free, solid.
-World four_cells() {
-  return World(GridGeometry({0.0, 0.0}, 0.5, 4, 1), std::vector<std::uint8_t>{0, 1, 0, 1});
-}
+const std::vector<std::uint8_t> kFourCells{0, 1, 0, 1};
+TruthGrid four_cells() { return TruthGrid(GridGeometry({0.0, 0.0}, 0.5, 4, 1), kFourCells); }
 
 TEST(MapAccuracy, CountsTheTwoKindsOfErrorOverKnownCellsOnly) {
-  const World truth = four_cells();
+  const TruthGrid truth = four_cells();
   OccupancyGrid map(truth.geometry());
   map.set_probability({0, 0}, 0.1);  // free as free: correct
   map.set_probability({1, 0}, 0.2);  // solid sensed as empty
@@ -29,7 +28,7 @@ TEST(MapAccuracy, CountsTheTwoKindsOfErrorOverKnownCellsOnly) {
 }
 
 TEST(MapAccuracy, ThresholdDecidesWhatCountsAsOccupied) {
-  const World truth = four_cells();
+  const TruthGrid truth = four_cells();
   OccupancyGrid map(truth.geometry());
   map.set_probability({1, 0}, 0.6);
   EXPECT_EQ(compare_to_truth(map, truth, 0.5).correct, 1u);
@@ -39,14 +38,14 @@ TEST(MapAccuracy, ThresholdDecidesWhatCountsAsOccupied) {
 }
 
 TEST(MapAccuracy, EmptyMapComparesNothing) {
-  const World truth = four_cells();
+  const TruthGrid truth = four_cells();
   const MapAccuracy a = compare_to_truth(OccupancyGrid(truth.geometry()), truth);
   EXPECT_EQ(a.cells_compared, 0u);
   EXPECT_DOUBLE_EQ(a.success_rate, 0.0);
 }
 
 TEST(MapAccuracy, PerfectMapOfTheTruthScoresOne) {
-  const World truth = four_cells();
+  const TruthGrid truth = four_cells();
   OccupancyGrid map(truth.geometry());
   for (int x = 0; x < 4; ++x) map.set_probability({x, 0}, truth.solid({x, 0}) ? 0.97 : 0.12);
   const MapAccuracy a = compare_to_truth(map, truth);
@@ -55,7 +54,7 @@ TEST(MapAccuracy, PerfectMapOfTheTruthScoresOne) {
 }
 
 TEST(MapAccuracy, CountsTheOccupiedCellsComparedForTheShare) {
-  const World truth = four_cells();
+  const TruthGrid truth = four_cells();
   OccupancyGrid map(truth.geometry());
   map.set_probability({1, 0}, 0.2);  // solid sensed as empty
   map.set_probability({3, 0}, 0.9);  // solid sensed as occupied
@@ -68,7 +67,7 @@ TEST(MapAccuracy, CountsTheOccupiedCellsComparedForTheShare) {
 // A SLAM map lives on its own grid: here cells of 0.25 m shifted by 0.1 m against the truth's
 // 0.5 m cells. Each map cell takes the truth of the world cell under its centre.
 TEST(MapAccuracy, AtCentresComparesAMapOnAnotherGrid) {
-  const World truth = four_cells();  // x in [0, 0.5) free, [0.5, 1) solid, [1, 1.5) free, ...
+  const TruthGrid truth = four_cells();  // x in [0, 0.5) free, [0.5, 1) solid, [1, 1.5) free, ...
   OccupancyGrid map(GridGeometry({0.1, 0.0}, 0.25, 4, 1));
   // Centres at 0.225 (free), 0.475 (free), 0.725 (solid), 0.975 (solid).
   map.set_probability({0, 0}, 0.1);
@@ -84,7 +83,7 @@ TEST(MapAccuracy, AtCentresComparesAMapOnAnotherGrid) {
 }
 
 TEST(MapAccuracy, AtCentresTreatsSpaceOutsideTheWorldAsSolid) {
-  const World truth = four_cells();
+  const TruthGrid truth = four_cells();
   OccupancyGrid map(GridGeometry({-1.0, 0.0}, 0.5, 1, 1));  // entirely left of the world
   map.set_probability({0, 0}, 0.1);
   EXPECT_EQ(compare_to_truth_at_centres(map, truth).occupied_as_empty, 1u);

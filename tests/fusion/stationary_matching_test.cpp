@@ -9,7 +9,8 @@
 
 #include "support/data.hpp"
 #include "tessera/io/tum_rgbd_sequence.hpp"
-#include "tessera/io/wall_textures.hpp"
+#include "tessera/render/simulated_rgbd_sequence.hpp"
+#include "tessera/render/wall_textures.hpp"
 #include "tessera/sim/stationary_scene.hpp"
 
 namespace tessera::fusion {

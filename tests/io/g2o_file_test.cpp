@@ -16,14 +16,14 @@ using io_test::TempDir;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-Result<slam::PoseGraph> read_text(const TempDir& dir, const std::string& text) {
+Result<posegraph::PoseGraph> read_text(const TempDir& dir, const std::string& text) {
   io_test::write_bytes(dir / "g.g2o", text);
   return read_g2o(dir / "g.g2o");
 }
 
 TEST(G2oFile, MapsVertexIdsToNodeIndicesInFileOrder) {
   TempDir dir;
-  const Result<slam::PoseGraph> g =
+  const Result<posegraph::PoseGraph> g =
       read_text(dir,
                 "# a comment\nVERTEX_SE2 20 1 2 0.5\nVERTEX_SE2 10 0 0 0\n\nFIX 10\n"
                 "EDGE_SE2 10 20 1 2 0.5 11 1 2 22 3 33\r\nEDGE_SE2\t20  10 -1 0 7 1 0 0 1 0 1\n");
@@ -33,7 +33,7 @@ TEST(G2oFile, MapsVertexIdsToNodeIndicesInFileOrder) {
   EXPECT_DOUBLE_EQ(g->poses[0].x, 1.0);
   EXPECT_DOUBLE_EQ(g->poses[0].theta, 0.5);
   ASSERT_EQ(g->edges.size(), 2u);
-  const slam::PoseGraphEdge& e = g->edges[0];
+  const posegraph::PoseGraphEdge& e = g->edges[0];
   EXPECT_EQ(e.from, 1);
   EXPECT_EQ(e.to, 0);
   EXPECT_DOUBLE_EQ(e.measurement.y, 2.0);
@@ -47,9 +47,9 @@ TEST(G2oFile, MapsVertexIdsToNodeIndicesInFileOrder) {
 TEST(G2oFile, EdgesOnlyFileChainsTheOdometryEdgesFromTheOrigin) {
   TempDir dir;
   const std::string info = " 1 0 0 1 0 1\n";
-  const Result<slam::PoseGraph> g = read_text(dir, "EDGE_SE2 0 2 9 9 0" + info +  // a loop edge
-                                                       "EDGE_SE2 1 2 1 0 1.5707963267948966" +
-                                                       info + "EDGE_SE2 0 1 2 0 0" + info);
+  const Result<posegraph::PoseGraph> g = read_text(
+      dir, "EDGE_SE2 0 2 9 9 0" + info +  // a loop edge
+               "EDGE_SE2 1 2 1 0 1.5707963267948966" + info + "EDGE_SE2 0 1 2 0 0" + info);
   ASSERT_TRUE(g.ok()) << g.error().message;
   EXPECT_EQ(g->ids, (std::vector<int>{0, 1, 2}));
   ASSERT_EQ(g->poses.size(), 3u);
@@ -62,7 +62,7 @@ TEST(G2oFile, EdgesOnlyFileChainsTheOdometryEdgesFromTheOrigin) {
 }
 
 TEST(G2oFile, RoundTripGivesTheGraphBackExactly) {
-  slam::PoseGraph graph;
+  posegraph::PoseGraph graph;
   graph.poses = {{0.1, -0.2, 0.3}, {1.0 / 3.0, 2.5e-7, -3.1}, {-4.0, 5.0, 1e-9}};
   graph.ids = {5, 7, 9};
   Eigen::Matrix3d info;
@@ -72,7 +72,7 @@ TEST(G2oFile, RoundTripGivesTheGraphBackExactly) {
   TempDir dir;
   ASSERT_TRUE(write_g2o(dir / "g.g2o", graph).ok());
   EXPECT_EQ(io_test::files_in(dir.path()), (std::vector<std::string>{"g.g2o"})) << "no temp";
-  const Result<slam::PoseGraph> back = read_g2o(dir / "g.g2o");
+  const Result<posegraph::PoseGraph> back = read_g2o(dir / "g.g2o");
   ASSERT_TRUE(back.ok()) << back.error().message;
   EXPECT_EQ(back->ids, graph.ids);
   ASSERT_EQ(back->poses.size(), 3u);
@@ -92,7 +92,7 @@ TEST(G2oFile, RoundTripGivesTheGraphBackExactly) {
 }
 
 TEST(G2oFile, EncodeWritesNodeIndicesWhenTheGraphHasNoIds) {
-  slam::PoseGraph graph;
+  posegraph::PoseGraph graph;
   graph.poses = {{}, {1.5, 0, 0}};
   graph.edges.push_back({0, 1, {1.5, 0, 0}, 2.0 * Eigen::Matrix3d::Identity()});
   EXPECT_EQ(encode_g2o(graph),
@@ -101,7 +101,7 @@ TEST(G2oFile, EncodeWritesNodeIndicesWhenTheGraphHasNoIds) {
 
 TEST(G2oFile, FailedWriteLeavesNothingBehind) {
   TempDir dir;
-  slam::PoseGraph graph;
+  posegraph::PoseGraph graph;
   graph.poses = {{}};
   const Status s = write_g2o(dir / "missing-folder" / "g.g2o", graph);
   ASSERT_FALSE(s.ok());
@@ -110,7 +110,7 @@ TEST(G2oFile, FailedWriteLeavesNothingBehind) {
 
 void expect_bad(const std::string& text, const std::string& where, const std::string& phrase) {
   TempDir dir;
-  const Result<slam::PoseGraph> g = read_text(dir, text);
+  const Result<posegraph::PoseGraph> g = read_text(dir, text);
   ASSERT_FALSE(g.ok());
   EXPECT_EQ(g.error().kind, ErrorKind::kInput);
   EXPECT_THAT(g.error().message, StartsWith((dir / where).string()));
@@ -173,7 +173,7 @@ TEST(G2oFile, FileWithoutVerticesOrEdgesIsRejected) {
 
 TEST(G2oFile, MissingFileIsAnInputError) {
   TempDir dir;
-  const Result<slam::PoseGraph> g = read_g2o(dir / "nope.g2o");
+  const Result<posegraph::PoseGraph> g = read_g2o(dir / "nope.g2o");
   ASSERT_FALSE(g.ok());
   EXPECT_EQ(g.error().kind, ErrorKind::kInput);
   EXPECT_THAT(g.error().message, HasSubstr("no such file"));
@@ -187,11 +187,11 @@ void expect_converges(const std::string& name, std::size_t nodes, std::size_t ed
                       double max_cost_ratio) {
   const auto path = support::data_path("posegraph/" + name);
   TESSERA_REQUIRE_DATA(path);
-  Result<slam::PoseGraph> g = read_g2o(path);
+  Result<posegraph::PoseGraph> g = read_g2o(path);
   ASSERT_TRUE(g.ok()) << g.error().message;
   EXPECT_EQ(g->poses.size(), nodes);
   EXPECT_EQ(g->edges.size(), edges);
-  const Result<slam::OptimizeSummary> s = slam::optimize(*g, {});
+  const Result<posegraph::OptimizeSummary> s = posegraph::optimize(*g, {});
   ASSERT_TRUE(s.ok()) << s.error().message;
   EXPECT_TRUE(s->converged) << s->termination;
   EXPECT_LT(s->final_cost, max_cost_ratio * s->initial_cost);

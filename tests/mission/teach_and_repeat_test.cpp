@@ -10,7 +10,7 @@
 #include <iostream>
 
 #include "support/data.hpp"
-#include "tessera/io/wall_textures.hpp"
+#include "tessera/render/wall_textures.hpp"
 #include "tessera/sim/builtin_world.hpp"
 #include "tessera/sim/poster.hpp"
 #include "tessera/sim/wall_faces.hpp"

@@ -4,14 +4,14 @@
 #include <gtest/gtest.h>
 
 #include "taught_corridor.hpp"
-#include "tessera/grid/hex_cell_map.hpp"
+#include "tessera/fusion/hex_cell_map.hpp"
 #include "tessera/nav/wavefront.hpp"
 
 namespace tessera {
 namespace {
 
 TEST(CellPathPolyline, AStraightCorridorOfHexagonsBecomesOneStraightSegment) {
-  const HexCellMap map = nav_test::taught_corridor(nav_test::corridor_length_m());
+  const fusion::HexCellMap map = nav_test::taught_corridor(nav_test::corridor_length_m());
   const CellGraph g = map.graph();
   const std::size_t goal = *map.find(map.lattice().cell_at({nav_test::corridor_length_m(), 0.0}));
   const std::vector<std::size_t> path = wavefront_path(g, wavefront(g, goal), 0);
@@ -26,7 +26,7 @@ TEST(CellPathPolyline, AStraightCorridorOfHexagonsBecomesOneStraightSegment) {
 
 TEST(CellPathPolyline, AnLShapedCorridorKeepsItsCornerAndStaysInsideTheCells) {
   // Taught east 2 m, then north 2 m: the shortcut across the corner would leave the corridor.
-  HexCellMap map;
+  fusion::HexCellMap map;
   nav_test::teach_line(map, {0.0, 0.0}, {2.0, 0.0});
   nav_test::teach_line(map, {2.0, 0.0}, {2.0, 2.0});
   const CellGraph g = map.graph();

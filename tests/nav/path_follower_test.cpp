@@ -7,7 +7,7 @@
 #include <string>
 
 #include "taught_corridor.hpp"
-#include "tessera/grid/hex_cell_map.hpp"
+#include "tessera/fusion/hex_cell_map.hpp"
 #include "tessera/nav/cell_polyline.hpp"
 #include "tessera/nav/greedy_cell_controller.hpp"
 #include "tessera/nav/wavefront.hpp"
@@ -70,8 +70,8 @@ TEST(PathFollowerOptions, ValidateNamesTheBadField) {
 // committing to the cell path and following its line-of-sight polyline (PathFollower) drives
 // straight, within 1.15 x the cell-path length (the bar). Same robot and limits.
 TEST(PathFollower, DrivesATiedCorridorStraightWhereTheThesisNavigationZigzags) {
-  const HexCellMap map = nav_test::taught_corridor(nav_test::corridor_length_m());
-  const CellGraph g = map.graph(CellAdjacency::kTraversed);
+  const fusion::HexCellMap map = nav_test::taught_corridor(nav_test::corridor_length_m());
+  const CellGraph g = map.graph(fusion::CellAdjacency::kTraversed);
   const std::size_t goal = *map.find(map.lattice().cell_at({nav_test::corridor_length_m(), 0.0}));
   const WavefrontField field = wavefront(g, goal);
   const std::vector<std::size_t> cells = wavefront_path(g, field, 0);

@@ -8,11 +8,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tessera/grid/hex_cell_map.hpp"
+#include "tessera/fusion/hex_cell_map.hpp"
 
 namespace tessera::nav_test {
 
-inline void teach_line(HexCellMap& map, Vec2 a, Vec2 b, double step_m = 0.01) {
+inline void teach_line(fusion::HexCellMap& map, Vec2 a, Vec2 b, double step_m = 0.01) {
   const Vec2 d = b - a;
   const double theta = std::atan2(d.y, d.x);
   const int n = std::max(1, static_cast<int>(std::ceil(d.norm() / step_m)));
@@ -29,8 +29,8 @@ inline double corridor_length_m(double cell_radius_m = 0.3) {
 }
 
 /// Cells along x in [0, length_m], taught out at y = +offset_m and back at y = -offset_m.
-inline HexCellMap taught_corridor(double length_m, double offset_m = 0.03) {
-  HexCellMap map;
+inline fusion::HexCellMap taught_corridor(double length_m, double offset_m = 0.03) {
+  fusion::HexCellMap map;
   (void)map.update({0.0, 0.0, 0.0});  // the map starts here: cell 0 centred on y = 0
   teach_line(map, {0.0, offset_m}, {length_m, offset_m});
   teach_line(map, {length_m, offset_m}, {length_m, -offset_m});

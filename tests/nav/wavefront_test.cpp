@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "taught_corridor.hpp"
-#include "tessera/grid/hex_cell_map.hpp"
+#include "tessera/fusion/hex_cell_map.hpp"
 
 namespace tessera {
 namespace {
@@ -55,8 +55,8 @@ TEST(Wavefront, TiesGoToTheNeighbourNearerTheGoalThenToTheLowerId) {
 TEST(Wavefront, OnTheThesisMapItUsesOnlyTraversedAdjacency) {
   // Out along y = +0.03 and back along y = -0.03: traversed adjacency reaches every cell, and the
   // path from the start to the far end is a shortest one in traversed steps.
-  const HexCellMap map = nav_test::taught_corridor(nav_test::corridor_length_m());
-  const CellGraph g = map.graph(CellAdjacency::kTraversed);
+  const fusion::HexCellMap map = nav_test::taught_corridor(nav_test::corridor_length_m());
+  const CellGraph g = map.graph(fusion::CellAdjacency::kTraversed);
   const std::size_t goal = *map.find(map.lattice().cell_at({nav_test::corridor_length_m(), 0.0}));
   const WavefrontField f = wavefront(g, goal);
   for (std::size_t i = 0; i < g.size(); ++i) EXPECT_NE(f.value[i], kNoWavefrontValue) << i;

@@ -1,6 +1,8 @@
 #pragma once
 // Exploration coverage (DESIGN.md report.json): the share of the ground truth's reachable free
-// cells that the map knows as free (known and p < free_below).
+// cells that the map knows as free (known and p < free_below). The reachable cells come from the
+// truth's owner (sim/world.hpp: World::reachable_from for a simulated world), so eval needs no
+// simulator.
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -8,7 +10,6 @@
 
 #include "tessera/core/cell.hpp"
 #include "tessera/grid/occupancy_grid.hpp"
-#include "tessera/sim/world.hpp"
 
 namespace tessera {
 
@@ -16,10 +17,6 @@ namespace tessera {
 /// World::reachable_from returns it). 0 when no cell is reachable.
 /// Precondition: reachable.size() == map.geometry().size(). Cost: O(cells).
 [[nodiscard]] double coverage(const OccupancyGrid& map, std::span<const std::uint8_t> reachable,
-                              double free_below = 0.5);
-
-/// Coverage of `map` over truth.reachable_from(start). Precondition: same width and height.
-[[nodiscard]] double coverage(const OccupancyGrid& map, const World& truth, Cell start,
                               double free_below = 0.5);
 
 /// Coverage kept up to date from the cells the sensors touched: O(touched) per update instead of
@@ -30,7 +27,6 @@ class CoverageTracker {
   /// `reachable`: one byte per cell of the map's geometry, 1 = reachable free cell of the truth.
   /// Starts as for an all-unknown map (nothing covered); reset() adopts a map that knows cells.
   explicit CoverageTracker(std::vector<std::uint8_t> reachable, double free_below = 0.5);
-  CoverageTracker(const World& truth, Cell start, double free_below = 0.5);
 
   /// Recounts from `map`. Cost: O(cells).
   void reset(const OccupancyGrid& map);

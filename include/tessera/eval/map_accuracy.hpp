@@ -5,8 +5,8 @@
 #include <cstddef>
 
 #include "tessera/core/pose2.hpp"
+#include "tessera/eval/truth_grid.hpp"
 #include "tessera/grid/occupancy_grid.hpp"
-#include "tessera/sim/world.hpp"
 
 namespace tessera {
 
@@ -29,7 +29,7 @@ struct MapAccuracy {
 /// Compares every known cell of `map` with `truth` cell by cell (threshold view: occupied when
 /// p >= occupied_threshold). Unknown cells are not compared.
 /// Precondition: map and truth have the same width and height. Cost: O(cells).
-[[nodiscard]] MapAccuracy compare_to_truth(const OccupancyGrid& map, const World& truth,
+[[nodiscard]] MapAccuracy compare_to_truth(const OccupancyGrid& map, const TruthGrid& truth,
                                            double occupied_threshold = 0.5);
 
 /// The same for a map on its own grid (a SLAM map: another origin and cell size, its own frame):
@@ -39,7 +39,8 @@ struct MapAccuracy {
 /// turns far walls away from where they are; ATE removes it, so must the map comparison). Map cells
 /// close to the world's resolution suit it best; a wall face inside a map cell counts as the side
 /// the centre falls on. Cost: O(map cells).
-[[nodiscard]] MapAccuracy compare_to_truth_at_centres(const OccupancyGrid& map, const World& truth,
+[[nodiscard]] MapAccuracy compare_to_truth_at_centres(const OccupancyGrid& map,
+                                                      const TruthGrid& truth,
                                                       const Pose2& T_truth_map = {},
                                                       double occupied_threshold = 0.5);
 

@@ -10,9 +10,9 @@
 #include <optional>
 #include <vector>
 
+#include "tessera/core/relation.hpp"
 #include "tessera/core/result.hpp"
 #include "tessera/core/stamped_pose2.hpp"
-#include "tessera/eval/relation.hpp"
 
 namespace tessera {
 

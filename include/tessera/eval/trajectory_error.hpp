@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "tessera/core/result.hpp"
-#include "tessera/eval/stamped_pose3.hpp"
+#include "tessera/trajectory/stamped_pose3.hpp"
 
 namespace tessera {
 

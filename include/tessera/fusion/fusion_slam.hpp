@@ -1,7 +1,7 @@
 #pragma once
 // The online Fusion SLAM of the thesis (../shared/seeds/002, section 4.3, Algorithms 1 and 2) with
 // the drift correction the thesis lacked (section 6.2 item 2):
-//  - the hex-cell map grows with the robot (grid/hex_cell_map.hpp: cells of radius 0.3 m, the
+//  - the hex-cell map grows with the robot (fusion/hex_cell_map.hpp: cells of radius 0.3 m, the
 //    Table 4.3 neighbours, traversed adjacency, firing fields, pose nodes every 0.15 m);
 //  - an image node (image_node.hpp) is captured when the robot is in a firing field (once per
 //    visit of a field, and again when the camera has turned by recapture_turn_rad within it);
@@ -9,7 +9,7 @@
 //    and the neighbouring cells ("search by cell", section 4.3.1) and the last few stored nodes,
 //    those whose camera faces the same way, nearest first;
 //  - every accepted match becomes a constraint with a Huber loss in a 2D pose graph
-//    (slam/pose_graph.hpp) whose other edges are the odometry between consecutive graph nodes;
+//    (posegraph/pose_graph.hpp) whose other edges are the odometry between consecutive graph nodes;
 //    the graph is optimised on every accepted match, and the hex cells, pose nodes and image
 //    nodes move with the optimised poses (HexCellMap::move_pose_nodes);
 //  - the corrected pose estimate is the last graph node's optimised pose composed with the
@@ -30,7 +30,7 @@
 #include "tessera/core/stamped_pose2.hpp"
 #include "tessera/fusion/image_node.hpp"
 #include "tessera/fusion/node_matcher.hpp"
-#include "tessera/grid/hex_cell_map.hpp"
+#include "tessera/fusion/hex_cell_map.hpp"
 #include "tessera/sensors/rgbd_frame.hpp"
 
 namespace tessera::fusion {
@@ -204,7 +204,7 @@ class FusionSlam {
   HexCellMap map_;
   Rng rng_;
 
-  // Pose graph (slam::PoseGraph is built on each optimisation from these).
+  // Pose graph (posegraph::PoseGraph is built on each optimisation from these).
   std::vector<GraphNode> graph_;
   std::vector<Pose2> poses_;
   struct Edge {

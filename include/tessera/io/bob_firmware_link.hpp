@@ -9,7 +9,7 @@
 #include <string>
 
 #include "tessera/core/result.hpp"
-#include "tessera/mission/bob_explorer_port.hpp"
+#include "tessera/sim/bob_explorer_port.hpp"
 
 namespace tessera {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "tessera/core/result.hpp"
-#include "tessera/slam/pose_graph.hpp"
+#include "tessera/posegraph/pose_graph.hpp"
 
 namespace tessera {
 
@@ -22,15 +22,16 @@ namespace tessera {
 /// an information matrix that is not positive definite, an edge naming a vertex without a
 /// VERTEX_SE2 line (when the file has any), a vertex the odometry chain does not reach (edges
 /// only), and a file with no vertex and no edge.
-[[nodiscard]] Result<slam::PoseGraph> read_g2o(const std::filesystem::path& path);
+[[nodiscard]] Result<posegraph::PoseGraph> read_g2o(const std::filesystem::path& path);
 
 /// g2o text of `graph`: one VERTEX_SE2 per node, then one EDGE_SE2 per edge, each number in its
 /// shortest round-trip form, so read_g2o(encode) gives the graph back exactly. Node i is written
 /// with id ids[i], or i when ids is empty. Precondition: ids is empty or has one id per pose, and
 /// every edge names existing nodes.
-[[nodiscard]] std::string encode_g2o(const slam::PoseGraph& graph);
+[[nodiscard]] std::string encode_g2o(const posegraph::PoseGraph& graph);
 
 /// Writes encode_g2o(graph) to `path` atomically.
-[[nodiscard]] Status write_g2o(const std::filesystem::path& path, const slam::PoseGraph& graph);
+[[nodiscard]] Status write_g2o(const std::filesystem::path& path,
+                               const posegraph::PoseGraph& graph);
 
 }  // namespace tessera

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "tessera/core/relation.hpp"
 #include "tessera/core/result.hpp"
-#include "tessera/eval/relation.hpp"
 
 namespace tessera {
 

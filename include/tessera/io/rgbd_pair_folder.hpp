@@ -13,9 +13,9 @@
 #include <filesystem>
 
 #include "tessera/core/result.hpp"
-#include "tessera/eval/stamped_pose3.hpp"
 #include "tessera/sensors/pinhole_camera.hpp"
 #include "tessera/sensors/rgbd_frame.hpp"
+#include "tessera/trajectory/stamped_pose3.hpp"
 
 namespace tessera {
 

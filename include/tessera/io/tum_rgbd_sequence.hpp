@@ -13,8 +13,9 @@
 //   neck.txt             "t neck_pan_rad" per line: the camera's pan on the robot (sim/rgbd_camera)
 //
 // Reading is lazy (sequences hold thousands of frames): open() reads the lists and associates
-// them; load(i) decodes one frame. The simulator writes its runs in the same layout, so every
-// experiment runs the same way on simulated and real data.
+// them; load(i) decodes one frame. The simulator's runs are written in the same layout
+// (render/simulated_rgbd_sequence.hpp), so every experiment runs the same way on simulated and
+// real data.
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -24,11 +25,9 @@
 #include "tessera/core/pose2.hpp"
 #include "tessera/core/result.hpp"
 #include "tessera/core/stamped_pose2.hpp"
-#include "tessera/eval/stamped_pose3.hpp"
+#include "tessera/trajectory/stamped_pose3.hpp"
 #include "tessera/sensors/pinhole_camera.hpp"
 #include "tessera/sensors/rgbd_frame.hpp"
-#include "tessera/sim/rgbd_camera.hpp"
-#include "tessera/sim/rgbd_run.hpp"
 
 namespace tessera {
 
@@ -114,21 +113,10 @@ struct TumRgbdSequenceContent {
 [[nodiscard]] Status write_tum_rgbd_sequence(const std::filesystem::path& folder,
                                              const TumRgbdSequenceContent& content);
 
-/// T_world_camera of the simulated camera's optical frame (z forward, x right, y down) for the
-/// robot at T_world_robot with the neck at neck_pan_rad, the optical centre mount_height_m above
-/// the floor on the pan axis (sim/rgbd_camera.hpp).
-[[nodiscard]] StampedPose3 optical_frame_pose(double t_s, const Pose2& T_world_robot,
-                                              double neck_pan_rad, double mount_height_m);
-
-/// The inverse for a level camera: the robot's T_world_robot from the optical frame's pose and
-/// the neck angle (the camera's heading minus the pan; height and tilt dropped).
+/// The robot's T_world_robot from a level camera's optical-frame pose (z forward, x right, y down)
+/// and the neck angle: the camera's heading minus the pan; height and tilt dropped. The inverse of
+/// render/simulated_rgbd_sequence.hpp's optical_frame_pose.
 [[nodiscard]] Pose2 robot_pose_from_optical_frame(const StampedPose3& T_world_camera,
                                                   double neck_pan_rad);
-
-/// A simulated run as a TUM sequence: frames rendered by render_rgbd_run_frame, ground truth =
-/// optical_frame_pose of the true pose, odometry.txt and neck.txt from the run.
-[[nodiscard]] Status write_simulated_rgbd_run(const std::filesystem::path& folder,
-                                              const RgbdCamera& camera,
-                                              const SimulatedRgbdRun& run);
 
 }  // namespace tessera

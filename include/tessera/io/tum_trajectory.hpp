@@ -5,7 +5,7 @@
 
 #include "tessera/core/result.hpp"
 #include "tessera/core/stamped_pose2.hpp"
-#include "tessera/eval/stamped_pose3.hpp"
+#include "tessera/trajectory/stamped_pose3.hpp"
 
 namespace tessera {
 

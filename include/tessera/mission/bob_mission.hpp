@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "tessera/bob/explorer.hpp"
-#include "tessera/mission/bob_explorer_port.hpp"
+#include "tessera/sim/bob_explorer_port.hpp"
 #include "tessera/core/cell.hpp"
 #include "tessera/core/result.hpp"
 #include "tessera/sensors/beacon_trilateration.hpp"

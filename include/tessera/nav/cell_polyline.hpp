@@ -19,8 +19,8 @@
 namespace tessera {
 
 struct CellPolylineOptions {
-  /// The cells' d (HexCellMapOptions::cell_radius_m): a point is in a cell when it lies in the
-  /// flat-topped hexagon with neighbouring centres this far apart around the cell's centre.
+  /// The cells' d (fusion::HexCellMapOptions::cell_radius_m): a point is in a cell when it lies in
+  /// the flat-topped hexagon with neighbouring centres this far apart around the cell's centre.
   double cell_radius_m = 0.3;
   /// Spacing of the points tested along a candidate shortcut, metres.
   double sample_step_m = 0.01;

@@ -11,7 +11,7 @@
 // path over the adjacency. The thesis stops sweeping once the robot's cell has a value; we sweep
 // until nothing changes so a robot that strays still finds values around it (the values of the
 // cells the thesis labels are the same). Which adjacency is used is the caller's choice
-// (HexCellMap::graph): the thesis uses the traversed adjacency.
+// (fusion::HexCellMap::graph): the thesis uses the traversed adjacency.
 #include <cstddef>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
 // A photograph to hang on a simulated wall (sim/rgbd_camera.hpp): a plain RGB buffer, so that sim
-// stays free of image files and OpenCV. io/wall_textures.hpp loads real photos into it.
+// stays free of image files and OpenCV. render/wall_textures.hpp loads real photos into it.
 #include <cstddef>
 #include <cstdint>
 #include <string>

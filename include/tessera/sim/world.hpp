@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,9 @@ class World {
     return !geometry_.contains(c) || solid_[geometry_.index_of(c)] != 0;
   }
   [[nodiscard]] bool free(Cell c) const { return !solid(c); }
+  /// One byte per cell, row-major, 1 = solid: the truth a map is scored against
+  /// (eval/truth_grid.hpp views it: TruthGrid(world.geometry(), world.solid_cells())).
+  [[nodiscard]] std::span<const std::uint8_t> solid_cells() const { return solid_; }
   [[nodiscard]] std::size_t free_count() const;
 
   /// The same world on a grid of `resolution_m` covering the same extent. A coarse cell is solid

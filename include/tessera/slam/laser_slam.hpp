@@ -22,7 +22,7 @@
 #include "tessera/slam/correlative_scan_matcher.hpp"
 #include "tessera/slam/loop_closer.hpp"
 #include "tessera/slam/motion_filter.hpp"
-#include "tessera/slam/pose_graph.hpp"
+#include "tessera/posegraph/pose_graph.hpp"
 #include "tessera/slam/scan_points.hpp"
 #include "tessera/slam/scan_refiner.hpp"
 #include "tessera/slam/submap.hpp"
@@ -188,7 +188,7 @@ struct LaserSlamResult {
   /// The same from local SLAM alone (scan-to-submap matching, before the pose graph).
   std::vector<StampedPose2> local_trajectory;
   /// Vertices: submaps and nodes in creation order; ids equal vertex indices.
-  PoseGraph graph;
+  posegraph::PoseGraph graph;
   /// For every vertex of `graph`: the scan index of a node, or -1 for a submap.
   std::vector<int> vertex_scan;
   OccupancyGrid map;

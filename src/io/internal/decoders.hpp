@@ -10,17 +10,17 @@
 #include <string_view>
 #include <vector>
 
+#include "tessera/core/relation.hpp"
 #include "tessera/core/result.hpp"
 #include "tessera/core/stamped_pose2.hpp"
-#include "tessera/eval/relation.hpp"
-#include "tessera/eval/stamped_pose3.hpp"
 #include "tessera/grid/occupancy_grid.hpp"
 #include "tessera/grid/polygon_map.hpp"
 #include "tessera/io/carmen_log.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/stage_world.hpp"
+#include "tessera/posegraph/pose_graph.hpp"
 #include "tessera/sensors/laser_log.hpp"
-#include "tessera/slam/pose_graph.hpp"
+#include "tessera/trajectory/stamped_pose3.hpp"
 
 namespace tessera::io_internal {
 
@@ -51,7 +51,8 @@ namespace tessera::io_internal {
                                                  const CarmenReadOptions& options);
 
 /// read_g2o (io/g2o_file.hpp).
-[[nodiscard]] Result<slam::PoseGraph> decode_g2o(std::string_view text, const std::string& file);
+[[nodiscard]] Result<posegraph::PoseGraph> decode_g2o(std::string_view text,
+                                                      const std::string& file);
 
 /// read_relations (io/relations_file.hpp).
 [[nodiscard]] Result<std::vector<Relation>> decode_relations(std::string_view text,

@@ -1,9 +1,9 @@
-#include "tessera/io/render.hpp"
+#include "tessera/render/render.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "io_test_util.hpp"
+#include "io/io_test_util.hpp"
 #include "tessera/io/image_file.hpp"
 
 namespace tessera {

@@ -2,7 +2,9 @@
 // Where a simulated BOBMapping run (mission/bob_mission.hpp) gets its decisions from: the
 // freestanding bob::Explorer in this process, or the same explorer running as firmware on a
 // microcontroller (an emulated Cortex-M4 across a serial link, io/bob_firmware_link.hpp). The
-// simulator owns the world, the body and the sensors; the port owns the robot's map.
+// simulator owns the world, the body and the sensors; the port owns the robot's map. It lives in
+// sim beside the sensing it carries (bob_sensing.hpp), so that the mission and the serial link in
+// io both reach it without io depending on mission.
 #include <cstdint>
 #include <vector>
 

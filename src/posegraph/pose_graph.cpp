@@ -1,7 +1,7 @@
 // Pose-graph optimisation with Ceres: one residual block per edge, the error of the measured
 // relative pose whitened by the square root of the edge's information matrix (the standard 2D
 // SLAM formulation; cf. Ceres' examples/slam/pose_graph_2d). Loop closures carry a Huber loss.
-#include "tessera/slam/pose_graph.hpp"
+#include "tessera/posegraph/pose_graph.hpp"
 
 #include <ceres/ceres.h>
 
@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-namespace tessera::slam {
+namespace tessera::posegraph {
 namespace {
 
 /// Wraps an angle into [-pi, pi) inside Ceres' automatic differentiation.
@@ -117,4 +117,4 @@ Result<OptimizeSummary> optimize(PoseGraph& graph, const OptimizeOptions& option
   return out;
 }
 
-}  // namespace tessera::slam
+}  // namespace tessera::posegraph

@@ -1,7 +1,8 @@
 #pragma once
-// 3D trajectories, as TUM RGB-D benchmark files hold them (Sturm et al. 2012): the type the
-// TUM-style trajectory errors (trajectory_error.hpp) work on. Core types stay free of Eigen, so the
-// 3D pose lives here, at eval's edge; planar trajectories enter through to_pose3.
+// 3D trajectories, as TUM RGB-D benchmark files hold them (Sturm et al. 2012): the type the TUM
+// readers (io) produce and the TUM-style trajectory errors (eval/trajectory_error.hpp) work on.
+// Core stays free of Eigen, so the 3D pose lives in this small header-only module beside it;
+// planar trajectories enter through to_pose3.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>

@@ -36,7 +36,7 @@
 #include "tessera/grid/cell_graph.hpp"
 #include "tessera/grid/hex_grid.hpp"
 
-namespace tessera {
+namespace tessera::fusion {
 
 struct HexCellMapOptions {
   /// The thesis' grid cell radius d: the distance between neighbouring centres (section 4.3.2,
@@ -151,4 +151,4 @@ class HexCellMap {
   std::size_t anchor_node_ = 0;  // node new cells are anchored to: the last stored or overlapped
 };
 
-}  // namespace tessera
+}  // namespace tessera::fusion

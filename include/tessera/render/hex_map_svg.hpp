@@ -1,5 +1,5 @@
 #pragma once
-// Pictures of the Fusion SLAM hex-cell map (grid/hex_cell_map.hpp): the cells as flat-topped
+// Pictures of the Fusion SLAM hex-cell map (fusion/hex_cell_map.hpp): the cells as flat-topped
 // hexagons, their adjacency, image nodes, the taught, repeated and true paths, start and goal,
 // optionally over a floor plan. SVG (vector, for docs and zooming) and PNG (the same drawing
 // rasterised). Map frame, north up; 1 m = pixels_per_m pixels.
@@ -10,7 +10,7 @@
 
 #include "tessera/core/result.hpp"
 #include "tessera/core/vec2.hpp"
-#include "tessera/grid/hex_cell_map.hpp"
+#include "tessera/fusion/hex_cell_map.hpp"
 #include "tessera/io/rgb_image.hpp"
 #include "tessera/sim/world.hpp"
 
@@ -18,11 +18,11 @@ namespace tessera {
 
 /// What to draw. Only `map` is required; the pointers are not owned and must outlive the call.
 struct HexMapPicture {
-  const HexCellMap* map = nullptr;
+  const fusion::HexCellMap* map = nullptr;
   /// Background: its solid cells in dark grey (free space stays white).
   const World* floor_plan = nullptr;
   /// Which adjacency to draw as lines between centres (the wavefront's is kTraversed).
-  CellAdjacency adjacency = CellAdjacency::kTraversed;
+  fusion::CellAdjacency adjacency = fusion::CellAdjacency::kTraversed;
   std::vector<Vec2> image_nodes_m;    // dots
   std::vector<Vec2> taught_path_m;    // blue: the estimated path while teaching
   std::vector<Vec2> repeated_path_m;  // orange: the estimated path while repeating

@@ -1,4 +1,4 @@
-#include "tessera/slam/pose_graph.hpp"
+#include "tessera/posegraph/pose_graph.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace tessera::slam {
+namespace tessera::posegraph {
 namespace {
 
 // A square of four odometry edges with a drifting heading, closed by one loop edge: the optimum
@@ -63,4 +63,4 @@ TEST(PoseGraph, EdgeToMissingNodeIsAnError) {
 }
 
 }  // namespace
-}  // namespace tessera::slam
+}  // namespace tessera::posegraph

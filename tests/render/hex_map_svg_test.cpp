@@ -1,4 +1,4 @@
-#include "tessera/io/hex_map_svg.hpp"
+#include "tessera/render/hex_map_svg.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io_test_util.hpp"
+#include "io/io_test_util.hpp"
 #include "tessera/io/image_file.hpp"
 
 namespace tessera {
@@ -18,8 +18,8 @@ using io_test::TempDir;
 using ::testing::HasSubstr;
 
 // A map taught along an L: east 1.5 m, north 1 m.
-HexCellMap l_map() {
-  HexCellMap map;
+fusion::HexCellMap l_map() {
+  fusion::HexCellMap map;
   for (int i = 0; i <= 150; ++i) (void)map.update({0.01 * i, 0.0, 0.0});
   for (int i = 0; i <= 100; ++i) (void)map.update({1.5, 0.01 * i, 1.57});
   return map;
@@ -62,7 +62,7 @@ std::size_t count(const std::string& s, const std::string& what) {
 }
 
 TEST(HexMapSvg, WritesAWellFormedSvgWithOneHexagonPerCellAndEveryLayer) {
-  const HexCellMap map = l_map();
+  const fusion::HexCellMap map = l_map();
   ASSERT_GE(map.cell_count(), 8u);
   HexMapPicture pic;
   pic.map = &map;
@@ -87,7 +87,7 @@ TEST(HexMapSvg, WritesAWellFormedSvgWithOneHexagonPerCellAndEveryLayer) {
   EXPECT_EQ(count(svg, "class=\"goal\""), 1u);
   // One line per traversed adjacency pair: the robot walked a chain, so cells - 1 pairs.
   std::size_t pairs = 0;
-  for (const HexCell& c : map.cells()) pairs += c.traversed.size();
+  for (const fusion::HexCell& c : map.cells()) pairs += c.traversed.size();
   EXPECT_EQ(count(svg, "<line "), pairs / 2);
   EXPECT_EQ(pairs / 2, map.cell_count() - 1);
   // The cell hexagons are flat-topped, 0.3 m between flat edges at 100 px/m: the first cell's
@@ -113,7 +113,7 @@ TEST(HexMapSvg, WritesAWellFormedSvgWithOneHexagonPerCellAndEveryLayer) {
 }
 
 TEST(HexMapSvg, DrawsTheFloorPlanSolidCellsAsRowRunsUnderTheCells) {
-  const HexCellMap map = l_map();
+  const fusion::HexCellMap map = l_map();
   // 4 x 3 cells of 1 m: the top row solid (one run), one solid cell in the bottom row.
   const World world(GridGeometry({-1.0, -1.0}, 1.0, 4, 3),
                     {0, 1, 0, 0, /**/ 0, 0, 0, 0, /**/ 1, 1, 1, 1});
@@ -133,7 +133,7 @@ TEST(HexMapSvg, DrawsTheFloorPlanSolidCellsAsRowRunsUnderTheCells) {
 }
 
 TEST(HexMapPng, RastersTheSameDrawingAndWritesAPng) {
-  const HexCellMap map = l_map();
+  const fusion::HexCellMap map = l_map();
   HexMapPicture pic;
   pic.map = &map;
   pic.goal_cell = 0;
@@ -158,8 +158,8 @@ TEST(HexMapPng, RastersTheSameDrawingAndWritesAPng) {
 }
 
 TEST(HexMapSvg, BadPicturesAreInputErrorsAndWriteNothing) {
-  const HexCellMap map = l_map();
-  const HexCellMap empty;
+  const fusion::HexCellMap map = l_map();
+  const fusion::HexCellMap empty;
   TempDir dir;
   const auto path = dir / "cells.svg";
   HexMapPicture pic;

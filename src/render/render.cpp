@@ -1,4 +1,4 @@
-#include "tessera/io/render.hpp"
+#include "tessera/render/render.hpp"
 
 #include <algorithm>
 #include <cmath>

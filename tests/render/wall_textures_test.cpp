@@ -1,4 +1,4 @@
-#include "tessera/io/wall_textures.hpp"
+#include "tessera/render/wall_textures.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

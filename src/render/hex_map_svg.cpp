@@ -1,4 +1,4 @@
-#include "tessera/io/hex_map_svg.hpp"
+#include "tessera/render/hex_map_svg.hpp"
 
 #include <algorithm>
 #include <array>
@@ -51,7 +51,7 @@ Status check_points(const std::vector<Vec2>& points, const char* what) {
 // Checks the picture and computes its frame.
 Result<Frame> frame_of(const HexMapPicture& pic) {
   if (pic.map == nullptr) return input_error("hex map picture: no map to draw");
-  const HexCellMap& map = *pic.map;
+  const fusion::HexCellMap& map = *pic.map;
   if (map.empty()) return input_error("hex map picture: the map has no cells");
   if (!(std::isfinite(pic.pixels_per_m) && pic.pixels_per_m > 0.0)) {
     return input_error("hex map picture: pixels per metre must be > 0, got " +
@@ -78,7 +78,7 @@ Result<Frame> frame_of(const HexMapPicture& pic) {
   }
   Bounds b;
   const double r = map.options().cell_radius_m / std::sqrt(3.0);  // circumradius
-  for (const HexCell& c : map.cells()) {
+  for (const fusion::HexCell& c : map.cells()) {
     if (!finite(c.centre_m)) return input_error("hex map picture: a cell centre is not finite");
     b.add(c.centre_m - Vec2{r, r});
     b.add(c.centre_m + Vec2{r, r});
@@ -166,7 +166,7 @@ Result<std::string> render_hex_map_svg(const HexMapPicture& pic) {
   Result<Frame> fr = frame_of(pic);
   if (!fr) return fr.error();
   const Frame& f = *fr;
-  const HexCellMap& map = *pic.map;
+  const fusion::HexCellMap& map = *pic.map;
   const double d = map.options().cell_radius_m;
   std::string out;
   out.reserve(256 + 160 * map.cell_count());
@@ -242,7 +242,7 @@ Result<RgbImage> render_hex_map_image(const HexMapPicture& pic) {
   Result<Frame> fr = frame_of(pic);
   if (!fr) return fr.error();
   const Frame& f = *fr;
-  const HexCellMap& map = *pic.map;
+  const fusion::HexCellMap& map = *pic.map;
   const double d = map.options().cell_radius_m;
   const auto color = [](Rgb c) { return cv::Scalar(c.r, c.g, c.b); };  // the Mat is R, G, B
   const auto pt = [&](Vec2 p) {
@@ -274,7 +274,7 @@ Result<RgbImage> render_hex_map_image(const HexMapPicture& pic) {
     cv::fillConvexPoly(image, hexagon(map.cell(static_cast<std::size_t>(pic.goal_cell)).centre_m),
                        color(kHexGoalColor), cv::LINE_AA);
   }
-  for (const HexCell& c : map.cells()) {
+  for (const fusion::HexCell& c : map.cells()) {
     const std::vector<std::vector<cv::Point>> polys{hexagon(c.centre_m)};
     cv::polylines(image, polys, true, color(kHexCellColor), 1, cv::LINE_AA);
   }

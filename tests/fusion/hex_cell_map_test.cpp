@@ -1,4 +1,4 @@
-#include "tessera/grid/hex_cell_map.hpp"
+#include "tessera/fusion/hex_cell_map.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace tessera {
+namespace tessera::fusion {
 namespace {
 
 using ::testing::ElementsAre;
@@ -223,4 +223,4 @@ TEST(HexCellMapOptions, ValidateNamesTheBadField) {
 }
 
 }  // namespace
-}  // namespace tessera
+}  // namespace tessera::fusion

@@ -6,7 +6,7 @@
 #include "tessera/core/pose2.hpp"
 #include "tessera/core/result.hpp"
 
-namespace tessera::slam {
+namespace tessera::posegraph {
 
 /// A relative-pose constraint: the pose of node `to` expressed in the frame of node `from`.
 struct PoseGraphEdge {
@@ -47,4 +47,4 @@ struct OptimizeSummary {
 /// Runtime error when the graph refers to a missing node or Ceres fails.
 [[nodiscard]] Result<OptimizeSummary> optimize(PoseGraph& graph, const OptimizeOptions& options);
 
-}  // namespace tessera::slam
+}  // namespace tessera::posegraph

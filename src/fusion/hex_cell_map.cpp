@@ -1,4 +1,4 @@
-#include "tessera/grid/hex_cell_map.hpp"
+#include "tessera/fusion/hex_cell_map.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "tessera/core/assert.hpp"
 
-namespace tessera {
+namespace tessera::fusion {
 namespace {
 
 // A walk longer than this in one update is cut short (a pose jump of ~30 km at d = 0.3 m); the
@@ -245,4 +245,4 @@ void HexCellMap::move_pose_nodes(std::span<const Pose2> corrected) {
   for (std::size_t i = 0; i < nodes_.size(); ++i) index_node(i);
 }
 
-}  // namespace tessera
+}  // namespace tessera::fusion

@@ -1,0 +1,37 @@
+#pragma once
+// The ground truth a map is scored against (map_accuracy.hpp, BOBMapping Table 1): which cells of a
+// grid are solid. A view over one byte per cell, so that a simulator's world
+// (sim/world.hpp: World::solid_cells), a floor plan read from a file or a surveyed map of a real
+// robot's floor can each be the truth without eval depending on where it came from.
+#include <cstdint>
+#include <span>
+
+#include "tessera/core/assert.hpp"
+#include "tessera/core/cell.hpp"
+#include "tessera/grid/grid_geometry.hpp"
+
+namespace tessera {
+
+class TruthGrid {
+ public:
+  /// `solid`: one byte per cell of `geometry`, row-major, 1 = solid, 0 = free. The bytes are not
+  /// copied: they must outlive the view. Precondition: solid.size() == geometry.size().
+  TruthGrid(const GridGeometry& geometry, std::span<const std::uint8_t> solid)
+      : geometry_(geometry), solid_(solid) {
+    TESSERA_ASSERT(solid_.size() == geometry_.size());
+  }
+
+  [[nodiscard]] const GridGeometry& geometry() const { return geometry_; }
+
+  /// True for solid cells and for every cell outside the grid (a robot can neither see nor drive
+  /// there), as the simulator's World counts them.
+  [[nodiscard]] bool solid(Cell c) const {
+    return !geometry_.contains(c) || solid_[geometry_.index_of(c)] != 0;
+  }
+
+ private:
+  GridGeometry geometry_;
+  std::span<const std::uint8_t> solid_;
+};
+
+}  // namespace tessera

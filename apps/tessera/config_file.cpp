@@ -43,6 +43,9 @@ std::string where(const std::filesystem::path& file, int line) {
 
 bool takes_many(const CLI::Option& option) { return option.get_items_expected_max() > 1; }
 
+/// --quiet and the like: no value on the command line, true or false in a file.
+bool is_flag(const CLI::Option& option) { return option.get_type_size() == 0; }
+
 }  // namespace
 
 void add_config_options(CLI::App& app) {
@@ -140,6 +143,8 @@ std::string effective_config_yaml(const CLI::App& command) {
       values = option->results();
     } else if (const std::string d = option->get_default_str(); !d.empty() && d != "[]") {
       values.push_back(d);
+    } else if (is_flag(*option)) {
+      values.push_back("false");  // a flag not given
     }
     YAML::Emitter out;
     out << YAML::BeginMap << YAML::Key << key << YAML::Value;

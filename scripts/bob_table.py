@@ -19,7 +19,8 @@ import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-DATA = pathlib.Path(os.environ.get("TESSERA_DATA_DIR", ROOT.parent / "shared" / "data"))
+# An empty TESSERA_DATA_DIR counts as unset, as in io/data_dir.hpp.
+DATA = pathlib.Path(os.environ.get("TESSERA_DATA_DIR") or ROOT.parent / "shared" / "data")
 MAPS = DATA / "maps"
 
 # (label, map file under maps/, extra options, crop X0,Y0,X1,Y1 in metres)
@@ -57,7 +58,7 @@ def run(tessera, world_args, variant, args, out):
     if done.returncode != 0:
         sys.exit("failed: %s\n%s" % (" ".join(cmd), done.stdout + done.stderr))
     report = json.loads((out / "report.json").read_text())
-    row = report["bob"]
+    row = report["map_accuracy"]
     row.update({"loc_" + k: v for k, v in report["localisation"].items()})
     return row
 

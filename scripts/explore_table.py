@@ -15,7 +15,8 @@ import sys
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-DATA = pathlib.Path(os.environ.get("TESSERA_DATA_DIR", ROOT.parent / "shared" / "data"))
+# An empty TESSERA_DATA_DIR counts as unset, as in io/data_dir.hpp.
+DATA = pathlib.Path(os.environ.get("TESSERA_DATA_DIR") or ROOT.parent / "shared" / "data")
 
 # (group, label, path relative to the data dir, extra arguments)
 MAPS = [

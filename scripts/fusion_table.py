@@ -21,7 +21,8 @@ import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-DATA = pathlib.Path(os.environ.get("TESSERA_DATA_DIR", ROOT.parent / "shared" / "data"))
+# An empty TESSERA_DATA_DIR counts as unset, as in io/data_dir.hpp.
+DATA = pathlib.Path(os.environ.get("TESSERA_DATA_DIR") or ROOT.parent / "shared" / "data")
 PHOTOS = DATA / "rgbd" / "rtabmap_loop_samples" / "images"
 
 # (label, arguments naming the world)

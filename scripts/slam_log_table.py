@@ -20,7 +20,8 @@ import sys
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-DATA = pathlib.Path(os.environ.get("TESSERA_DATA_DIR", ROOT.parent / "shared" / "data"))
+# An empty TESSERA_DATA_DIR counts as unset, as in io/data_dir.hpp.
+DATA = pathlib.Path(os.environ.get("TESSERA_DATA_DIR") or ROOT.parent / "shared" / "data")
 TOOLS = DATA.parent / "tools"
 
 # name -> (corrected log relative to the data folder, label, peer ATE at seed 1 / 0.15 deg/m:

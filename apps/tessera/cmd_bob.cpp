@@ -19,7 +19,8 @@
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/bob_firmware_link.hpp"
 #include "tessera/io/bob_map_file.hpp"
-#include "tessera/io/bob_monitor.hpp"
+#include "tessera/report/bob_monitor.hpp"
+#include "tessera/report/bob_report.hpp"
 #include "tessera/io/image_file.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/mission/bob_mission.hpp"
@@ -95,55 +96,6 @@ class Emulator {
   pid_t pid_ = -1;
 };
 
-const char* stop_reason_name(bob::StopReason r) {
-  switch (r) {
-    case bob::StopReason::kBackAtStart:
-      return "back at start";
-    case bob::StopReason::kAllSensed:
-      return "all cells sensed";
-    case bob::StopReason::kNoReachableTarget:
-      return "no reachable target";
-    case bob::StopReason::kNone:
-      break;
-  }
-  return "none";
-}
-
-nlohmann::json row_json(const BobTableRow& r) {
-  return {{"cells", r.cells},
-          {"sensed_cells", r.sensed_cells},
-          {"resensed_cells", r.resensed},
-          {"ignored_readings", r.ignored_readings},
-          {"empty_as_occupied", r.empty_as_occupied},
-          {"occupied_as_empty", r.occupied_as_empty},
-          {"success_rate", r.success_rate},
-          {"empty_as_occupied_strict", r.empty_as_occupied_strict},
-          {"occupied_as_empty_strict", r.occupied_as_empty_strict},
-          {"success_rate_strict", r.success_rate_strict},
-          {"path_cells", r.path_cells},
-          {"turns", r.turns},
-          {"visited_cells", r.visited_cells},
-          {"path_share", r.path_share},
-          {"visited_share", r.visited_share},
-          {"free_reachable_c", r.free_reachable},
-          {"boundary_edges_e", r.boundary_edges},
-          {"path_per_c", r.path_per_c},
-          {"path_per_smartdfs_bound", r.path_per_smartdfs}};
-}
-
-nlohmann::json localisation_json(const BobLocalisationStats& s) {
-  return {{"fixes", s.fixes},
-          {"failed_fixes", s.failed_fixes},
-          {"repositionings", s.repositionings},
-          {"unresolved_steps", s.unresolved_steps},
-          {"bumps", s.bumps},
-          {"collisions", s.collisions},
-          {"mean_fix_error_m", s.mean_fix_error_m},
-          {"max_drift_m", s.max_drift_m},
-          {"max_position_error_m", s.max_position_error_m},
-          {"max_heading_error_deg", s.max_heading_error_rad * 180.0 / std::numbers::pi}};
-}
-
 }  // namespace
 
 BobCommand::BobCommand(CLI::App& app) {
@@ -196,6 +148,7 @@ BobCommand::BobCommand(CLI::App& app) {
 }
 
 int BobCommand::run() const {
+  const auto t0 = std::chrono::steady_clock::now();
   Result<World> loaded = load_world(world_, kBuiltinResolutionM);
   if (!loaded) return report_error(loaded.error());
   const World cropped = std::move(loaded).value();
@@ -309,24 +262,21 @@ int BobCommand::run() const {
   Result<std::string> png = encode_png(render_bob_monitor(r));
   if (!png) return report_error(png.error());
 
-  nlohmann::json report = {{"command", "bob"},
-                           {"seed", seed_},
-                           {"options",
-                            {{"cell_m", cell_m_},
-                             {"variant", variant_},
-                             {"noise", noise_},
-                             {"resense", resense_},
-                             {"start", {r.start.x, r.start.y}},
-                             {"localisation", localisation_}}},
-                           {"world",
-                            {{"file", world_name},
-                             {"resolution_m", world.geometry().resolution_m()},
-                             {"width_cells", r.width},
-                             {"height_cells", r.height}}},
-                           {"bob", row_json(r.row)},
-                           {"localisation", localisation_json(r.localisation)}};
-  report["bob"]["stop_reason"] = stop_reason_name(r.stop_reason);
-  report["bob"]["variant"] = variant_;
+  BobReportContext context;
+  context.run = {"bob",
+                 seed_,
+                 {{"cell_m", cell_m_},
+                  {"variant", variant_},
+                  {"noise", noise_},
+                  {"resense", resense_},
+                  {"start", {r.start.x, r.start.y}},
+                  {"localisation", localisation_}},
+                 seconds_since(t0),
+                 std::nullopt};
+  context.world_file = world_name;
+  context.world_resolution_m = world.geometry().resolution_m();
+  context.variant = variant_;
+  nlohmann::json report = bob_report(r, context);
   if (firmware_) {
     report["firmware"] = {{"elf", firmware_->string()},
                           {"board", "mps2-an386 (QEMU)"},

@@ -10,7 +10,7 @@
 #include "tessera/core/angle.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/carmen_log.hpp"
-#include "tessera/io/eval_report.hpp"
+#include "tessera/report/eval_report.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/relations_file.hpp"
 #include "tessera/io/tum_trajectory.hpp"
@@ -148,6 +148,7 @@ int EvalCommand::run_ate() const {
                      {"max_difference_s", options_.max_difference_s},
                      {"rpe_delta_s", options_.rpe_delta_s}};
   context.wall_s = seconds_since(t0);
+  context.data_duration_s = estimate->back().t_s - estimate->front().t_s;
   const std::optional<RelativePoseError> rpe_or_none =
       rpe ? std::optional<RelativePoseError>(*rpe) : std::nullopt;
   return write_report(out_, trajectory_report(*ate, rpe_or_none, options_.rpe_delta_s, context));

@@ -6,7 +6,7 @@
 
 #include "commands.hpp"
 #include "tessera/io/atomic_file.hpp"
-#include "tessera/io/exploration_report.hpp"
+#include "tessera/report/exploration_report.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/tum_trajectory.hpp"

@@ -15,6 +15,8 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "tessera/io/data_dir.hpp"
+#include "tessera/report/core_report.hpp"
 #include "tessera/core/angle.hpp"
 #include "tessera/core/rng.hpp"
 #include "tessera/fusion/feature_type.hpp"
@@ -91,7 +93,8 @@ FusionCommand::FusionCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1000));
   sub_->add_option("--textures", options_.textures,
                    "Folder of photos hung on the walls as posters (default: "
-                   "$TESSERA_DATA_DIR or ../shared/data, then rgbd/rtabmap_loop_samples/images)");
+                   "the data folder, $TESSERA_DATA_DIR or ../shared/data beside the sources, "
+                   "then rgbd/rtabmap_loop_samples/images)");
   sub_->add_option("--start", options_.start, "Start x,y in metres (default: chosen by --seed)");
   sub_->add_option("--goal", options_.goal, "Goal x,y in metres (default: chosen by --seed)");
   sub_->add_option("--duration-s", options_.duration_s,
@@ -208,10 +211,7 @@ int FusionCommand::run_pair() const {
   }
   const double wall_s = seconds_since(t0);
 
-  const nlohmann::json report = {
-      {"tessera_version", TESSERA_VERSION},
-      {"command", "fusion"},
-      {"seed", options_.seed},
+  nlohmann::json report = {
       {"options",
        {{"mode", "pair"},
         {"pair", options_.pair->string()},
@@ -234,8 +234,9 @@ int FusionCommand::run_pair() const {
         {"min_spread_m", match_options.min_spread_m},
         {"max_median_reprojection_px", match_options.max_median_reprojection_px},
         {"pnp_fallback", match_options.pnp_fallback}}},
-      {"pair", pair_json},
-      {"timing", {{"wall_s", wall_s}}}};
+      {"pair", pair_json}};
+  // One frame pair has no data clock: data_duration_s is null.
+  report.update(core_report({"fusion", options_.seed, report["options"], wall_s, std::nullopt}));
 
   if (Status s = ensure_directory(options_.out); !s) return report_error(s.error());
   if (Status s = write_json_atomic(options_.out / "report.json", report); !s) {
@@ -254,9 +255,7 @@ int FusionCommand::run_pair() const {
 namespace {
 
 std::filesystem::path default_textures() {
-  const char* env = std::getenv("TESSERA_DATA_DIR");
-  const std::filesystem::path data = env != nullptr && *env != '\0' ? env : "../shared/data";
-  return data / "rgbd/rtabmap_loop_samples/images";
+  return data_dir() / "rgbd/rtabmap_loop_samples/images";
 }
 
 nlohmann::json pose_json(const Pose2& p) {
@@ -573,19 +572,13 @@ int FusionCommand::run_teach_and_repeat_table() const {
                                   {"search_trials", searches},
                                   {"search_successes", found}};
   nlohmann::json report = {
-      {"tessera_version", TESSERA_VERSION},
-      {"command", "fusion"},
-      {"seed", options_.seed},
       {"options", simulated_options_json(*setup, "teach-and-repeat")},
       {"world", world_json(world)},
       {"trajectory",
        {{"poses", results.front().run.corrected_trajectory.size()},
         {"ate_rmse_m", results.front().run.ate_corrected_m},
-        {"ate_odometry_rmse_m", results.front().run.ate_odometry_m}}},
-      {"timing",
-       {{"wall_s", wall_s},
-        {"data_duration_s", results.front().run.duration_s},
-        {"realtime_factor", wall_s > 0.0 ? results.front().run.duration_s / wall_s : 0.0}}}};
+        {"ate_odometry_rmse_m", results.front().run.ate_odometry_m}}}};
+  report.update(core_report({"fusion", options_.seed, report["options"], wall_s, results.front().run.duration_s}));
   report["teach_and_repeat"] = {{"summary", summary}, {"runs", run_rows}};
 
   if (Status s = ensure_directory(options_.out); !s) return report_error(s.error());
@@ -685,10 +678,7 @@ int FusionCommand::run_mapping() const {
   picture.true_path_m = true_path;
   Result<std::string> svg = render_hex_map_svg(picture);
   if (!svg) return report_error(svg.error());
-  nlohmann::json report = {{"tessera_version", TESSERA_VERSION},
-                           {"command", "fusion"},
-                           {"seed", options_.seed},
-                           {"options", simulated_options_json(*setup, "world")},
+  nlohmann::json report = {{"options", simulated_options_json(*setup, "world")},
                            {"world", world_json(world)},
                            {"run",
                             {{"start", pose_json(setup->start)},
@@ -699,11 +689,8 @@ int FusionCommand::run_mapping() const {
                              {"path_length_m", run->path_length_m},
                              {"completed", run->completed}}},
                            {"fusion", slam_json(slam, steps.size(), replayed->frames_loaded)},
-                           {"trajectory", trajectory_json(slam, truth)},
-                           {"timing",
-                            {{"wall_s", wall_s},
-                             {"data_duration_s", run->duration_s},
-                             {"realtime_factor", wall_s > 0.0 ? run->duration_s / wall_s : 0.0}}}};
+                           {"trajectory", trajectory_json(slam, truth)}};
+  report.update(core_report({"fusion", options_.seed, report["options"], wall_s, run->duration_s}));
 
   // The sequence first: it is the largest output and the likeliest to fail (a full disk, a file
   // in the way); it is written to a temporary folder and renamed, so a failure leaves nothing.
@@ -773,21 +760,15 @@ int FusionCommand::run_sequence() const {
       sequence->size() > 1 ? sequence->entries().back().t_s - sequence->entries().front().t_s : 0.0;
   nlohmann::json fusion_block = slam_json(slam, sequence->size(), replayed->frames_loaded);
   fusion_block["frames_with_odometry"] = steps.size();
-  const nlohmann::json report = {{"tessera_version", TESSERA_VERSION},
-                                 {"command", "fusion"},
-                                 {"seed", options_.seed},
-                                 {"options",
+  nlohmann::json report = {{"options",
                                   {{"mode", "sequence"},
                                    {"sequence", options_.sequence->string()},
                                    {"features", std::string(fusion::to_string(*type))},
                                    {"cell_radius_m", options.map.cell_radius_m},
                                    {"firing_field_radius_m", options.map.firing_field_radius_m}}},
                                  {"fusion", fusion_block},
-                                 {"trajectory", trajectory_json(slam, truth)},
-                                 {"timing",
-                                  {{"wall_s", wall_s},
-                                   {"data_duration_s", duration_s},
-                                   {"realtime_factor", wall_s > 0.0 ? duration_s / wall_s : 0.0}}}};
+                                 {"trajectory", trajectory_json(slam, truth)}};
+  report.update(core_report({"fusion", options_.seed, report["options"], wall_s, duration_s}));
 
   if (Status s = write_slam_outputs(options_.out, *svg, picture, slam, truth, report); !s) {
     return report_error(s.error());

@@ -10,6 +10,7 @@
 #include "tessera/io/g2o_file.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/posegraph/pose_graph.hpp"
+#include "tessera/report/core_report.hpp"
 
 namespace tessera::cli {
 
@@ -49,10 +50,10 @@ int PosegraphCommand::run() const {
   const posegraph::OptimizeSummary& s = *optimized;
   const double wall_s = seconds_since(start);
 
-  const nlohmann::json report = {{"tessera_version", TESSERA_VERSION},
-                                 {"command", "posegraph optimize"},
-                                 {"options", {{"iterations", iterations_}}},
-                                 {"input", {{"file", in_.string()}}},
+  // Nothing is random and a pose graph has no data clock: seed and data_duration_s are null.
+  nlohmann::json report = core_report(
+      {"posegraph optimize", std::nullopt, {{"iterations", iterations_}}, wall_s, std::nullopt});
+  report.update(nlohmann::json{{"input", {{"file", in_.string()}}},
                                  {"output", {{"file", out_.string()}}},
                                  {"posegraph",
                                   {{"nodes", graph->poses.size()},
@@ -62,8 +63,7 @@ int PosegraphCommand::run() const {
                                    {"iterations", s.iterations},
                                    {"time_s", s.time_s},
                                    {"converged", s.converged},
-                                   {"termination", s.termination}}},
-                                 {"timing", {{"wall_s", wall_s}}}};
+                                   {"termination", s.termination}}}});
   const std::string g2o = encode_g2o(*graph);
   const std::string json = encode_json(report);
   const std::array<PendingFile, 2> files{{{out_, g2o}, {report_path, json}}};

@@ -18,7 +18,8 @@
 #include "tessera/eval/trajectory_error.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/carmen_log.hpp"
-#include "tessera/io/eval_report.hpp"
+#include "tessera/report/core_report.hpp"
+#include "tessera/report/eval_report.hpp"
 #include "tessera/io/g2o_file.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
@@ -227,10 +228,7 @@ int SlamCommand::run() const {
   }
 
   const slam::LaserSlamStats& st = r.stats;
-  nlohmann::json report = {{"tessera_version", TESSERA_VERSION},
-                           {"command", "slam"},
-                           {"seed", simulated ? nlohmann::json(seed_) : nlohmann::json(nullptr)},
-                           {"options",
+  nlohmann::json report = {{"options",
                             {{log_ ? "log" : bag_ ? "bag" : "world", input_name},
                              {"loop_closure", options.loop_closure},
                              {"map_resolution_m", options.map_resolution_m},
@@ -271,11 +269,11 @@ int SlamCommand::run() const {
                              {"matching_s", st.matching_s},
                              {"loop_search_s", st.loop_search_s},
                              {"optimization_s", st.optimization_s},
-                             {"map_s", st.map_s}}},
-                           {"timing",
-                            {{"wall_s", wall_s},
-                             {"data_duration_s", duration_s},
-                             {"realtime_factor", wall_s > 0.0 ? duration_s / wall_s : 0.0}}}};
+                             {"map_s", st.map_s}}}};
+  // A log has no random draw: the seed is null unless the run is simulated.
+  report.update(core_report({"slam",
+                             simulated ? std::optional<std::uint64_t>(seed_) : std::nullopt,
+                             report["options"], wall_s, duration_s}));
   if (relations_) report["options"]["relations"] = relations_->string();
   if (bag_) report["bag"] = bag_report;
   std::optional<SimulationScore> score;
@@ -350,7 +348,7 @@ int SlamCommand::run() const {
         "slam: {} scans, {} nodes, {} submaps, {} loop closures; {:.1f} s for {:.1f} s of data "
         "({:.1f}x real time)\n",
         st.scans, st.nodes, st.submaps, st.loop_closures, wall_s, duration_s,
-        wall_s > 0.0 ? duration_s / wall_s : 0.0);
+        realtime_factor(duration_s, wall_s).value_or(0.0));
     if (metric) {
       fmt::print(
           "relations: {} scored; translation {:.4f} +/- {:.4f} m, rotation {:.3f} +/- "

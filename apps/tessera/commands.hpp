@@ -11,6 +11,8 @@
 
 #include "cli_support.hpp"
 #include "tessera/eval/trajectory_error.hpp"
+#include "tessera/mission/bob_mission.hpp"
+#include "tessera/mission/exploration_mission.hpp"
 
 namespace tessera::cli {
 
@@ -29,19 +31,23 @@ class ExploreCommand : public Command {
   [[nodiscard]] int run() const;
 
  private:
+  // The defaults are the library's (ExplorationMissionOptions and its LidarOptions), read here
+  // so that --help and --print-config show them; none is written twice.
+  static inline const ExplorationMissionOptions kDefaults{};
   WorldSource world_;
-  std::string strategy_ = "nearest";
-  std::string sensor_ = "cells";
-  int robots_ = 1;
-  std::uint64_t seed_ = 1;
+  std::string strategy_ =
+      kDefaults.strategy == FrontierStrategy::kPriority ? "priority" : "nearest";
+  std::string sensor_ = kDefaults.sensor == RobotKind::kLidar ? "lidar" : "cells";
+  int robots_ = kDefaults.robots;
+  std::uint64_t seed_ = kDefaults.seed;
   std::filesystem::path out_ = "out/explore";
-  double resolution_m_ = 0.1;
+  double resolution_m_ = 0.1;  // the CLI's own: the grid the built-in worlds are drawn at
   std::optional<std::string> start_;
-  double lidar_range_m_ = 8.0;
-  int lidar_beams_ = 360;
-  double range_noise_m_ = 0.01;
-  double low_ = 0.5;
-  std::int64_t max_steps_ = 0;
+  double lidar_range_m_ = kDefaults.lidar.max_range_m;
+  int lidar_beams_ = kDefaults.lidar.beams;
+  double range_noise_m_ = kDefaults.lidar.range_noise_stddev_m;
+  double low_ = kDefaults.low;
+  std::int64_t max_steps_ = kDefaults.max_steps;
   bool quiet_ = false;
 };
 
@@ -93,13 +99,14 @@ class BobCommand : public Command {
   [[nodiscard]] int run() const;
 
  private:
+  static inline const BobMissionOptions kDefaults{};  // the library's defaults, written once
   WorldSource world_{std::nullopt, "labyrinth", std::nullopt, std::nullopt};
-  double cell_m_ = 0.22;
-  std::string variant_ = "trail";
-  std::string noise_ = "on";
-  std::string resense_ = "on";
-  std::string localisation_ = "beacons";
-  std::uint64_t seed_ = 1;
+  double cell_m_ = kDefaults.cell_m;
+  std::string variant_ = kDefaults.variant == BobVariant::kMapAware ? "map-aware" : "trail";
+  std::string noise_ = kDefaults.noise ? "on" : "off";
+  std::string resense_ = kDefaults.resense ? "on" : "off";
+  std::string localisation_ = kDefaults.perfect_localisation ? "perfect" : "beacons";
+  std::uint64_t seed_ = kDefaults.seed;
   std::optional<std::string> start_;
   std::filesystem::path out_ = "out/bob";
   bool quiet_ = false;

@@ -4,11 +4,15 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "config_file.hpp"
+#include "tessera/report/core_report.hpp"
 
 int main(int argc, char** argv) {
   using namespace tessera::cli;
   CLI::App app{"tessera: 2D indoor mapping, exploration and SLAM for mobile robots"};
-  app.set_version_flag("--version", TESSERA_VERSION);
+  // Every option bound to a variable records its default, which --print-config prints.
+  app.option_defaults()->always_capture_default();
+  app.set_version_flag("--version", tessera::tessera_version());
   app.require_subcommand(1);
 
   ExploreCommand explore(app);
@@ -20,6 +24,7 @@ int main(int argc, char** argv) {
   EvalCommand eval(app);
   SlamCommand slam(app);
   FusionCommand fusion(app);
+  add_config_options(app);
 
   try {
     app.parse(argc, argv);
@@ -27,6 +32,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitUsage;
   }
+  if (const int code = handle_config_options(app); code >= 0) return code;
   if (explore.parsed()) return explore.run();
   if (render.parsed()) return render.run();
   if (info.parsed()) return info.run();

@@ -30,14 +30,10 @@
 #include "tessera/sensors/lidar.hpp"
 #include "tessera/sim/simulator.hpp"
 #include "tessera/sim/world.hpp"
+#include "tessera/io/data_dir.hpp"
 
 namespace tessera {
 namespace {
-
-std::filesystem::path data_dir() {
-  if (const char* env = std::getenv("TESSERA_DATA_DIR"); env != nullptr && *env != '\0') return env;
-  return TESSERA_DEFAULT_DATA_DIR;
-}
 
 const std::filesystem::path kWarehouse = "maps/ros_map_server/nav2_warehouse/warehouse.yaml";
 

@@ -15,14 +15,10 @@
 #include "tessera/fusion/image_node.hpp"
 #include "tessera/fusion/node_matcher.hpp"
 #include "tessera/io/rgbd_pair_folder.hpp"
+#include "tessera/io/data_dir.hpp"
 
 namespace tessera {
 namespace {
-
-std::filesystem::path data_dir() {
-  if (const char* env = std::getenv("TESSERA_DATA_DIR"); env != nullptr && *env != '\0') return env;
-  return TESSERA_DEFAULT_DATA_DIR;
-}
 
 /// case_1, read once; nullptr, with the benchmark skipped and the reason given, when the data is
 /// missing.

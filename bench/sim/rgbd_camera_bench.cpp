@@ -16,14 +16,10 @@
 #include "tessera/render/wall_textures.hpp"
 #include "tessera/sim/builtin_world.hpp"
 #include "tessera/sim/rgbd_camera.hpp"
+#include "tessera/io/data_dir.hpp"
 
 namespace tessera {
 namespace {
-
-std::filesystem::path data_dir() {
-  if (const char* env = std::getenv("TESSERA_DATA_DIR"); env != nullptr && *env != '\0') return env;
-  return TESSERA_DEFAULT_DATA_DIR;
-}
 
 WallTexture synthetic_photo() {
   WallTexture t{512, 384, std::vector<std::uint8_t>(3 * 512 * 384), "synthetic"};

@@ -31,14 +31,10 @@
 #include "tessera/render/render.hpp"
 #include "tessera/io/tum_trajectory.hpp"
 #include "tessera/slam/laser_slam.hpp"
+#include "tessera/io/data_dir.hpp"
 
 namespace tessera {
 namespace {
-
-std::filesystem::path data_dir() {
-  if (const char* env = std::getenv("TESSERA_DATA_DIR"); env != nullptr && *env != '\0') return env;
-  return TESSERA_DEFAULT_DATA_DIR;
-}
 
 using Setter = std::function<void(slam::LaserSlamOptions&, double)>;
 

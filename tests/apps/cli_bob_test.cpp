@@ -64,12 +64,12 @@ TEST(CliBob, WritesMonitorMapAndReportForBothVariants) {
     EXPECT_EQ(report["seed"], 3);
     EXPECT_EQ(report["options"]["variant"], variant);
     EXPECT_EQ(report["world"]["width_cells"], 12);
-    EXPECT_EQ(report["bob"]["cells"], 108);
-    EXPECT_EQ(report["bob"]["empty_as_occupied"], 0);
-    EXPECT_EQ(report["bob"]["occupied_as_empty"], 0);
-    EXPECT_EQ(report["bob"]["success_rate"], 1.0);
-    EXPECT_EQ(report["bob"]["free_reachable_c"], 65);
-    EXPECT_GT(report["bob"]["path_cells"].get<int>(), 0);
+    EXPECT_EQ(report["map_accuracy"]["cells"], 108);
+    EXPECT_EQ(report["map_accuracy"]["empty_as_occupied"], 0);
+    EXPECT_EQ(report["map_accuracy"]["occupied_as_empty"], 0);
+    EXPECT_EQ(report["map_accuracy"]["success_rate"], 1.0);
+    EXPECT_EQ(report["map_accuracy"]["free_reachable_c"], 65);
+    EXPECT_GT(report["map_accuracy"]["path_cells"].get<int>(), 0);
     // map.bob: "BOB1", 12, 9, 220 mm, then 9 rows of 2 bytes; the bottom row is all wall.
     const std::string bob = read_bytes(out / "map.bob");
     ASSERT_EQ(bob.size(), 10u + 9u * 2u);
@@ -91,7 +91,7 @@ TEST(CliBob, ResenseOffIsRecordedInTheReportAndABadValueIsAUsageError) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
   EXPECT_EQ(report["options"]["resense"], "off");
-  EXPECT_EQ(report["bob"]["resensed_cells"], 0);
+  EXPECT_EQ(report["map_accuracy"]["resensed_cells"], 0);
   const support::CliRun bad = run_cli("bob --world " + world.string() +
                                       " --resense maybe --quiet --out " + out.string() + "2");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
@@ -134,7 +134,7 @@ TEST(CliBob, MonitorDirHoldsOnePictureForTheStartAndOneForEveryMove) {
                                       monitor.string() + " --quiet --out " + out.string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
-  const int moves = report["bob"]["path_cells"].get<int>();
+  const int moves = report["map_accuracy"]["path_cells"].get<int>();
   int frames = 0;
   for (const auto& e : std::filesystem::directory_iterator(monitor)) {
     EXPECT_EQ(e.path().extension(), ".png");

@@ -3,14 +3,11 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "tessera/io/data_dir.hpp"
+
 namespace tessera::support {
 
-std::filesystem::path data_dir() {
-  if (const char* env = std::getenv("TESSERA_DATA_DIR"); env != nullptr && *env != '\0') {
-    return env;
-  }
-  return TESSERA_DEFAULT_DATA_DIR;
-}
+std::filesystem::path data_dir() { return tessera::data_dir(); }
 
 std::filesystem::path data_path(const std::filesystem::path& relative) {
   return data_dir() / relative;

@@ -1,6 +1,6 @@
 #pragma once
-// Where tests find the real datasets: the one setting TESSERA_DATA_DIR, with ../shared/data (beside
-// the project root) as default. When CI=true a missing dataset fails the test instead of skipping
+// Where tests find the real datasets: io/data_dir.hpp (TESSERA_DATA_DIR, empty counts as unset,
+// default ../shared/data beside the project root), the lookup the CLI and benchmarks use too. When CI=true a missing dataset fails the test instead of skipping
 // it.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,5 @@
 #pragma once
-// report.json of `tessera eval`: the core keys of DESIGN.md ("tessera_version", "command", "seed",
-// "options", "timing") and the section the evaluation fills, "relations" (Kummerle et al. 2009
+// report.json of `tessera eval`: the core keys (report/core_report.hpp) and the section the evaluation fills, "relations" (Kummerle et al. 2009
 // relation metric) or "trajectory" (TUM ATE and RPE, Sturm et al. 2012). Angles are reported in
 // degrees, as the published figures are.
 #include <nlohmann/json.hpp>
@@ -17,11 +16,13 @@ struct EvalReportContext {
   std::string command;                                // "eval relations", "eval ate"
   nlohmann::json options = nlohmann::json::object();  // effective options and input files
   double wall_s = 0.0;
+  std::optional<double> data_duration_s;  // trajectory_report: the estimate's time span
 };
 
 /// "relations": {count, skipped, trans_mean_m, trans_std_m, trans_sq_mean_m2, trans_sq_std_m2,
 /// rot_mean_deg, rot_std_deg, rot_sq_mean_deg2, rot_sq_std_deg2} and "trajectory": {poses,
-/// begin_s, end_s} (the span after the time offset). "seed" is null: nothing is random.
+/// begin_s, end_s} (the span after the time offset, which is also timing.data_duration_s). "seed"
+/// is null: nothing is random.
 [[nodiscard]] nlohmann::json relations_report(const RelationMetric& metric,
                                               const EvalReportContext& context);
 

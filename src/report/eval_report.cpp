@@ -1,25 +1,22 @@
-#include "tessera/io/eval_report.hpp"
+#include "tessera/report/eval_report.hpp"
 
 #include "tessera/core/angle.hpp"
+#include "tessera/report/core_report.hpp"
 
 namespace tessera {
 namespace {
 
-nlohmann::json core_keys(const EvalReportContext& context) {
-  nlohmann::json j;
-  j["tessera_version"] = "0.1.0";
-  j["command"] = context.command;
-  j["seed"] = nullptr;
-  j["options"] = context.options;
-  j["timing"] = {{"wall_s", context.wall_s}};
-  return j;
+/// Nothing in an evaluation is random: the seed is null.
+nlohmann::json core_keys(const EvalReportContext& context, std::optional<double> data_duration_s) {
+  return core_report({context.command, std::nullopt, context.options, context.wall_s,
+                              data_duration_s});
 }
 
 }  // namespace
 
 nlohmann::json relations_report(const RelationMetric& m, const EvalReportContext& context) {
   const double deg_per_rad = rad_to_deg(1.0);
-  nlohmann::json j = core_keys(context);
+  nlohmann::json j = core_keys(context, m.trajectory_end_s - m.trajectory_begin_s);
   j["relations"] = {{"count", m.count},
                     {"skipped", m.skipped},
                     {"trans_mean_m", m.trans_mean_m},
@@ -38,7 +35,7 @@ nlohmann::json relations_report(const RelationMetric& m, const EvalReportContext
 nlohmann::json trajectory_report(const AbsoluteTrajectoryError& ate,
                                  const std::optional<RelativePoseError>& rpe, double rpe_delta_s,
                                  const EvalReportContext& context) {
-  nlohmann::json j = core_keys(context);
+  nlohmann::json j = core_keys(context, context.data_duration_s);
   nlohmann::json t = {{"poses", ate.estimate_poses},    {"reference_poses", ate.reference_poses},
                       {"pairs", ate.trans_m.count},     {"ate_rmse_m", ate.trans_m.rmse},
                       {"ate_mean_m", ate.trans_m.mean}, {"ate_median_m", ate.trans_m.median},

@@ -1,6 +1,8 @@
-#include "tessera/io/exploration_report.hpp"
+#include "tessera/report/exploration_report.hpp"
 
 #include <algorithm>
+
+#include "tessera/report/core_report.hpp"
 
 namespace tessera {
 namespace {
@@ -16,11 +18,9 @@ nlohmann::json or_null(const std::optional<T>& v) {
 nlohmann::json exploration_report(const ExplorationResult& r, const World& world,
                                   const ExplorationReportContext& context) {
   const ExplorationMetrics& m = r.metrics;
-  nlohmann::json j;
-  j["tessera_version"] = "0.1.0";
-  j["command"] = "explore";
-  j["seed"] = context.seed;
-  j["options"] = context.options;
+  // The simulator has no clock of its own: one step is one second (the trajectory's stamps).
+  nlohmann::json j = core_report({"explore", context.seed, context.options, context.wall_s,
+                                          static_cast<double>(m.steps)});
   j["world"] = {{"file", context.world_file},
                 {"resolution_m", world.geometry().resolution_m()},
                 {"width_cells", world.geometry().width()},
@@ -47,7 +47,7 @@ nlohmann::json exploration_report(const ExplorationResult& r, const World& world
                        {"empty_as_occupied", r.accuracy.empty_as_occupied},
                        {"occupied_as_empty", r.accuracy.occupied_as_empty},
                        {"success_rate", r.accuracy.success_rate}};
-  j["timing"] = {{"wall_s", context.wall_s}, {"planning_s", r.planning_time_s}};
+  j["timing"]["planning_s"] = r.planning_time_s;
 
   // Coverage over time, thinned evenly to at most 500 samples; the last sample is always kept.
   const auto& series = m.coverage_over_time;

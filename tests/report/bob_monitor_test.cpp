@@ -1,4 +1,4 @@
-#include "tessera/io/bob_monitor.hpp"
+#include "tessera/report/bob_monitor.hpp"
 
 #include <gtest/gtest.h>
 

@@ -17,9 +17,9 @@ struct ExplorationReportContext {
   double wall_s = 0.0;
 };
 
-/// report.json of an exploration run, with the core keys of DESIGN.md ("tessera_version",
-/// "command", "seed", "options", "world", "exploration", "map_accuracy", "timing") and the coverage
-/// time series under "coverage_over_time" (at most 500 samples, always including the last).
+/// report.json of an exploration run: the core keys (report/core_report.hpp; data_duration_s is
+/// one second per step, the trajectory's stamps, and timing adds planning_s), "world",
+/// "exploration", "map_accuracy" and the coverage time series under "coverage_over_time" (at most 500 samples, always including the last).
 [[nodiscard]] nlohmann::json exploration_report(const ExplorationResult& result, const World& world,
                                                 const ExplorationReportContext& context);
 

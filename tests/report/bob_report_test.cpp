@@ -1,0 +1,48 @@
+#include "tessera/report/bob_report.hpp"
+
+#include <gtest/gtest.h>
+
+namespace tessera {
+namespace {
+
+BobResult scored_run() {
+  BobResult r;
+  r.width = 3;
+  r.height = 2;
+  r.row.cells = 6;
+  r.row.empty_as_occupied = 1;
+  r.row.occupied_as_empty = 2;
+  r.row.success_rate = 0.5;
+  r.row.path_cells = 9;
+  r.row.free_reachable = 4;
+  r.stop_reason = bob::StopReason::kBackAtStart;
+  return r;
+}
+
+TEST(BobReport, PutsTableOneUnderMapAccuracyWithDesignKeysAndTheRowBesideThem) {
+  BobReportContext context;
+  context.run = {"bob", 3, {{"variant", "trail"}}, 1.5, std::nullopt};
+  context.world_file = "builtin:labyrinth";
+  context.world_resolution_m = 0.05;
+  context.variant = "trail";
+  const nlohmann::json j = bob_report(scored_run(), context);
+  const nlohmann::json& a = j["map_accuracy"];
+  EXPECT_EQ(a["cells_compared"], 6);
+  EXPECT_EQ(a["correct"], 3);  // 6 cells - 1 - 2 errors
+  EXPECT_EQ(a["empty_as_occupied"], 1);
+  EXPECT_EQ(a["occupied_as_empty"], 2);
+  EXPECT_DOUBLE_EQ(a["success_rate"].get<double>(), 0.5);
+  EXPECT_EQ(a["path_cells"], 9);
+  EXPECT_EQ(a["free_reachable_c"], 4);
+  EXPECT_EQ(a["stop_reason"], "back at start");
+  EXPECT_EQ(a["variant"], "trail");
+  EXPECT_FALSE(j.contains("bob"));
+  EXPECT_EQ(j["command"], "bob");
+  EXPECT_EQ(j["seed"], 3);
+  EXPECT_EQ(j["world"]["width_cells"], 3);
+  EXPECT_TRUE(j["timing"]["data_duration_s"].is_null());  // a BOB run counts moves, not seconds
+  EXPECT_TRUE(j.contains("localisation"));
+}
+
+}  // namespace
+}  // namespace tessera

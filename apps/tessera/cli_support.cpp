@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "tessera/io/map_file.hpp"
@@ -118,6 +119,11 @@ Result<Vec2> parse_point(const std::string& text, const std::string& option) {
     return usage_error(fmt::format("{} expects X,Y in metres, got '{}'", option, text));
   }
   return p;
+}
+
+std::filesystem::path default_data_dir() {
+  const char* env = std::getenv("TESSERA_DATA_DIR");
+  return env != nullptr && *env != '\0' ? env : "../shared/data";
 }
 
 }  // namespace tessera::cli

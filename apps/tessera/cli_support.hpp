@@ -26,6 +26,9 @@ int report_error(const Error& e);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// The shared data folder: TESSERA_DATA_DIR when it is set and not empty, else ../shared/data.
+[[nodiscard]] std::filesystem::path default_data_dir();
+
 /// True when stderr is a terminal (progress lines are shown only there).
 [[nodiscard]] bool stderr_is_terminal();
 

@@ -26,6 +26,7 @@ int report_error(const Error& e);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+
 /// True when stderr is a terminal (progress lines are shown only there).
 [[nodiscard]] bool stderr_is_terminal();
 

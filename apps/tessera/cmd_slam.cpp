@@ -11,11 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "slam_report.hpp"
 #include "tessera/core/angle.hpp"
+#include "tessera/eval/drift_correction.hpp"
 #include "tessera/eval/map_accuracy.hpp"
 #include "tessera/eval/relation_metric.hpp"
-#include "tessera/trajectory/stamped_pose3.hpp"
-#include "tessera/eval/trajectory_error.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/carmen_log.hpp"
 #include "tessera/report/core_report.hpp"
@@ -31,63 +31,6 @@
 #include "tessera/slam/laser_slam.hpp"
 
 namespace tessera::cli {
-namespace {
-
-/// Stamps may go backwards in real logs: the span is max - min.
-double data_duration_s(const LaserLog& log) {
-  if (log.scans.empty()) return 0.0;
-  const auto [lo, hi] =
-      std::minmax_element(log.scans.begin(), log.scans.end(),
-                          [](const StampedScan& a, const StampedScan& b) { return a.t_s < b.t_s; });
-  return hi->t_s - lo->t_s;
-}
-
-/// The scans' odometry poses as a trajectory.
-std::vector<StampedPose2> odometry_trajectory(const LaserLog& log) {
-  std::vector<StampedPose2> out;
-  out.reserve(log.scans.size());
-  for (const StampedScan& s : log.scans) out.push_back({s.t_s, s.odometry});
-  return out;
-}
-
-/// The planar part of a 3D alignment (x, y and the rotation about z).
-Pose2 planar(const Eigen::Isometry3d& T) {
-  return {T.translation().x(), T.translation().y(), std::atan2(T.linear()(1, 0), T.linear()(0, 0))};
-}
-
-/// What a simulated run is scored by: the ATE of SLAM, of local SLAM alone and of odometry alone
-/// against the truth, and the SLAM map against the world.
-struct SimulationScore {
-  double slam_ate_m = 0.0;
-  double local_ate_m = 0.0;
-  double odometry_ate_m = 0.0;
-  Pose2 T_truth_map;  // the SLAM trajectory's alignment, applied to its map
-  MapAccuracy map;
-};
-
-Result<SimulationScore> score_simulation(const SimulatedLaserRun& run, const World& world,
-                                         const slam::LaserSlamResult& r) {
-  Result<AbsoluteTrajectoryError> slam_ate = absolute_trajectory_error(r.trajectory, run.truth);
-  if (!slam_ate) return slam_ate.error();
-  Result<AbsoluteTrajectoryError> local_ate =
-      absolute_trajectory_error(r.local_trajectory, run.truth);
-  if (!local_ate) return local_ate.error();
-  Result<AbsoluteTrajectoryError> odometry_ate =
-      absolute_trajectory_error(odometry_trajectory(run.log), run.truth);
-  if (!odometry_ate) return odometry_ate.error();
-  SimulationScore score;
-  score.slam_ate_m = slam_ate->trans_m.rmse;
-  score.local_ate_m = local_ate->trans_m.rmse;
-  score.odometry_ate_m = odometry_ate->trans_m.rmse;
-  // The map lives in the SLAM trajectory's frame: align it as the ATE aligns the trajectory.
-  score.T_truth_map = planar(slam_ate->T_reference_estimate);
-  score.map = compare_to_truth_at_centres(r.map, TruthGrid(world.geometry(), world.solid_cells()),
-                                          score.T_truth_map);
-  return score;
-}
-
-}  // namespace
-
 SlamCommand::SlamCommand(CLI::App& app) {
   sub_ = app.add_subcommand(
       "slam",
@@ -112,7 +55,8 @@ SlamCommand::SlamCommand(CLI::App& app) {
                    "Simulated run: stop the covering tour after this many seconds (0: no limit)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  sub_->add_option("--start", start_, "Simulated run: start position X,Y in metres (default: random)");
+  sub_->add_option("--start", start_,
+                   "Simulated run: start position X,Y in metres (default: random)");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
   sub_->add_option("--relations", relations_,
                    "Score the trajectory against a relations file (Kummerle et al. 2009)");
@@ -158,15 +102,7 @@ int SlamCommand::run() const {
   } else if (bag_) {
     Result<RobotBag> read = read_robot_bag(*bag_, {scan_topic_, odom_topic_, base_frame_});
     if (!read) return report_error(read.error());
-    const Pose2& laser = read->log.scans.front().laser_in_robot;
-    bag_report = {{"format", read->format},
-                  {"scan_topic", read->scan_topic},
-                  {"odom_topic", read->odom_topic},
-                  {"odom_frame", read->odom_frame},
-                  {"base_frame", read->base_frame},
-                  {"laser_frame", read->laser_frame},
-                  {"laser_in_robot_m_rad", {laser.x, laser.y, laser.theta}},
-                  {"no_return_readings", read->no_return_readings}};
+    bag_report = bag_json(*read);
     read_log = std::move(read->log);
   } else {
     Result<World> loaded = load_world(world_, 0.05);
@@ -228,80 +164,32 @@ int SlamCommand::run() const {
   }
 
   const slam::LaserSlamStats& st = r.stats;
-  nlohmann::json report = {{"options",
-                            {{log_ ? "log" : bag_ ? "bag" : "world", input_name},
-                             {"loop_closure", options.loop_closure},
-                             {"map_resolution_m", options.map_resolution_m},
-                             {"submap_resolution_m", options.submaps.resolution_m},
-                             {"scans_per_submap", options.submaps.scans_per_submap},
-                             {"max_range_m", options.points.max_range_m},
-                             {"loop_window_m", options.loop_closer.window.linear_m},
-                             {"loop_window_rad", options.loop_closer.window.angular_rad},
-                             {"loop_min_score", options.loop_closer.min_score},
-                             {"loop_sampling_ratio", options.loop_sampling_ratio},
-                             {"optimize_every_n_nodes", options.optimize_every_n_nodes},
-                             {"travel_per_submap_m", options.submaps.travel_per_submap_m},
-                             {"refiner_translation_weight_per_m",
-                              options.refiner.translation_weight},
-                             {"refiner_rotation_weight_per_rad", options.refiner.rotation_weight},
-                             {"local_sigmas_per_m",
-                              {options.local_sigmas_per_m.translation_m,
-                               options.local_sigmas_per_m.rotation_rad}},
-                             {"loop_window_growth_m_per_m", options.loop_window_growth_m_per_m},
-                             {"loop_window_growth_rad_per_m", options.loop_window_growth_rad_per_m},
-                             {"loop_window_max_m_rad",
-                              {options.loop_window_max.linear_m,
-                               options.loop_window_max.angular_rad}}}},
-                           {"slam",
-                            {{"scans", st.scans},
-                             {"nodes", st.nodes},
-                             {"submaps", st.submaps},
-                             {"loop_searches", st.loop_searches},
-                             {"global_searches", st.global_searches},
-                             {"loop_closures", st.loop_closures},
-                             {"loop_candidates", st.loop_candidates},
-                             {"loop_unverified", st.loop_unverified},
-                             {"loop_rejected", st.loop_rejected},
-                             {"optimizations", st.optimizations},
-                             {"graph_vertices", r.graph.poses.size()},
-                             {"graph_edges", r.graph.edges.size()},
-                             {"backward_stamps", log.backward_stamps},
-                             {"matching_s", st.matching_s},
-                             {"loop_search_s", st.loop_search_s},
-                             {"optimization_s", st.optimization_s},
-                             {"map_s", st.map_s}}}};
+  nlohmann::json report = {{"options", slam_options_json(options,
+                                                         log_   ? "log"
+                                                         : bag_ ? "bag"
+                                                                : "world",
+                                                         input_name)},
+                           {"slam", slam_stats_json(r, log)}};
   // A log has no random draw: the seed is null unless the run is simulated.
   report.update(core_report({"slam",
                              simulated ? std::optional<std::uint64_t>(seed_) : std::nullopt,
                              report["options"], wall_s, duration_s}));
   if (relations_) report["options"]["relations"] = relations_->string();
   if (bag_) report["bag"] = bag_report;
-  std::optional<SimulationScore> score;
+  // A simulated run: its ATE of SLAM, local SLAM and odometry against the truth, and the map
+  // against the world, aligned as the ATE aligns the trajectory.
+  std::optional<DriftCorrectionScore> score;
+  MapAccuracy map_accuracy;
   if (simulated) {
-    Result<SimulationScore> scored = score_simulation(*simulated, *world, r);
+    Result<DriftCorrectionScore> scored = score_drift_correction(
+        r.trajectory, odometry_trajectory(log), simulated->truth, &r.local_trajectory);
     if (!scored) return report_error(scored.error());
     score = *scored;
-    const MapAccuracy& m = score->map;
-    report["simulation"] = {{"duration_s", simulated->duration_s},
-                            {"path_length_m", simulated->path_length_m},
-                            {"turned_rad", simulated->turned_rad},
-                            {"tour_completed", simulated->tour_completed},
-                            {"world_resolution_m", world->geometry().resolution_m()}};
-    report["ate"] = {{"slam_rmse_m", score->slam_ate_m},
-                     {"local_slam_rmse_m", score->local_ate_m},
-                     {"odometry_rmse_m", score->odometry_ate_m},
-                     {"odometry_over_slam",
-                      score->slam_ate_m > 0.0 ? score->odometry_ate_m / score->slam_ate_m : 0.0}};
-    report["map_accuracy"] = {{"truth", "world cell under each map cell's centre, map aligned as the ATE aligns the trajectory"},
-                              {"alignment_m_rad",
-                               {score->T_truth_map.x, score->T_truth_map.y,
-                                score->T_truth_map.theta}},
-                              {"cells_compared", m.cells_compared},
-                              {"occupied_compared", m.occupied_compared},
-                              {"occupied_as_empty", m.occupied_as_empty},
-                              {"empty_as_occupied", m.empty_as_occupied},
-                              {"occupied_as_empty_share", m.occupied_as_empty_share()},
-                              {"success_rate", m.success_rate}};
+    map_accuracy = compare_to_truth_at_centres(
+        r.map, TruthGrid(world->geometry(), world->solid_cells()), score->T_truth_slam());
+    report["simulation"] = simulation_json(*simulated, *world);
+    report["ate"] = ate_json(*score);
+    report["map_accuracy"] = map_accuracy_json(map_accuracy, score->T_truth_slam());
   }
   if (metric) {
     report["options"]["time_offset_s"] = time_offset_s_;
@@ -309,39 +197,12 @@ int SlamCommand::run() const {
   }
 
   // Outputs: each file is written atomically; the folder is made only now.
-  if (Status s = ensure_directory(out_); !s) return report_error(s.error());
-  if (Status s = write_map_yaml(r.map, out_ / "map.yaml", MapSaveOptions{}); !s) {
+  if (Status s = write_laser_slam_outputs(out_, r, report, world ? &*world : nullptr,
+                                          score ? score->T_truth_slam() : Pose2{},
+                                          simulated ? &*simulated : nullptr);
+      !s) {
     return report_error(s.error());
   }
-  RenderLayers layers;
-  layers.map = &r.map;
-  if (world) {  // map errors in colour
-    layers.truth = &*world;
-    layers.T_truth_map = score->T_truth_map;
-  }
-  std::vector<Vec2> path;
-  path.reserve(r.trajectory.size());
-  for (const StampedPose2& p : r.trajectory) path.push_back(p.pose.translation());
-  if (!path.empty()) layers.robots_m.push_back(path.back());
-  layers.paths_m.push_back(std::move(path));
-  Result<std::string> png = render_png(layers);
-  if (!png) return report_error(png.error());
-  const std::string trajectory = encode_tum_trajectory(r.trajectory);
-  const std::string graph = encode_g2o(r.graph);
-  const std::string json = encode_json(report);
-  std::vector<PendingFile> files{{out_ / "map.png", *png},
-                                 {out_ / "trajectory.txt", trajectory},
-                                 {out_ / "graph.g2o", graph},
-                                 {out_ / "report.json", json}};
-  std::string truth_tum;  // PendingFile holds a view: the bytes must outlive the write
-  std::string odometry_tum;
-  if (simulated) {
-    truth_tum = encode_tum_trajectory(simulated->truth);
-    odometry_tum = encode_tum_trajectory(odometry_trajectory(log));
-    files.push_back({out_ / "truth.txt", truth_tum});
-    files.push_back({out_ / "odometry.txt", odometry_tum});
-  }
-  if (Status s = write_files_atomic(files); !s) return report_error(s.error());
 
   if (!quiet_) {
     fmt::print(
@@ -360,10 +221,9 @@ int SlamCommand::run() const {
       fmt::print(
           "ground truth: ATE {:.4f} m with SLAM, {:.4f} m odometry alone ({:.1f}x); map: {} of "
           "{} occupied cells seen as empty ({:.2f} %)\n",
-          score->slam_ate_m, score->odometry_ate_m,
-          score->slam_ate_m > 0.0 ? score->odometry_ate_m / score->slam_ate_m : 0.0,
-          score->map.occupied_as_empty, score->map.occupied_compared,
-          100.0 * score->map.occupied_as_empty_share());
+          score->slam.trans_m.rmse, score->odometry.trans_m.rmse, score->odometry_over_slam(),
+          map_accuracy.occupied_as_empty, map_accuracy.occupied_compared,
+          100.0 * map_accuracy.occupied_as_empty_share());
     }
     fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt graph.g2o report.json{}\n",
                out_.string(), simulated ? " truth.txt odometry.txt" : "");

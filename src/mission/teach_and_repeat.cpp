@@ -4,98 +4,34 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <queue>
 #include <unordered_map>
 #include <utility>
 
-#include "tessera/trajectory/stamped_pose3.hpp"
-#include "tessera/eval/trajectory_error.hpp"
+#include "tessera/core/angle.hpp"
+#include "tessera/eval/drift_correction.hpp"
 #include "tessera/nav/cell_polyline.hpp"
-#include "tessera/nav/process_state_machine.hpp"
 #include "tessera/nav/wavefront.hpp"
 #include "tessera/sim/differential_drive.hpp"
-#include "tessera/sim/tour.hpp"
 
 namespace tessera {
 namespace {
 
 bool positive(double v) { return std::isfinite(v) && v > 0.0; }
 
-struct RoomSearch {
-  std::vector<std::uint8_t> room;
-  std::vector<double> dist_m;
-  std::vector<std::int64_t> parent;
-};
-
-/// Dijkstra over the room cells from `start`, 8-connected without corner cutting.
-RoomSearch search_room(const World& world, Cell start, std::vector<std::uint8_t> room) {
-  const GridGeometry& g = world.geometry();
-  RoomSearch s;
-  s.room = std::move(room);
-  s.dist_m.assign(g.size(), std::numeric_limits<double>::infinity());
-  s.parent.assign(g.size(), -1);
-  const double r = g.resolution_m();
-  using Item = std::pair<double, std::size_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
-  const std::size_t s0 = g.index_of(start);
-  s.dist_m[s0] = 0.0;
-  open.emplace(0.0, s0);
-  auto is_room = [&](Cell c) { return g.contains(c) && s.room[g.index_of(c)] != 0; };
-  while (!open.empty()) {
-    const auto [d, i] = open.top();
-    open.pop();
-    if (d > s.dist_m[i]) continue;
-    const Cell c = g.cell_of(i);
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        if (dx == 0 && dy == 0) continue;
-        const Cell n{c.x + dx, c.y + dy};
-        if (!is_room(n)) continue;
-        if (dx != 0 && dy != 0 && (!is_room({c.x + dx, c.y}) || !is_room({c.x, c.y + dy}))) continue;
-        const double nd = d + ((dx != 0 && dy != 0) ? std::numbers::sqrt2 * r : r);
-        const std::size_t ni = g.index_of(n);
-        if (nd < s.dist_m[ni]) {
-          s.dist_m[ni] = nd;
-          s.parent[ni] = static_cast<std::int64_t>(i);
-          open.emplace(nd, ni);
-        }
-      }
-    }
+/// The view's score as a goal node: the coverage cells (8 x 6 over the image, as the matcher's
+/// check) with features that have depth, then the features with depth. A node that covers the
+/// image well is one the search can confirm (6.2 item 4). (-1, -1) when the view makes no node.
+std::pair<int, int> goal_view_score(const fusion::NodeCreation& view) {
+  if (!view.ok()) return {-1, -1};
+  std::vector<std::uint8_t> covered(48, 0);
+  for (const fusion::NodeFeature& f : view.node.features) {
+    if (!f.has_depth) continue;
+    const int cx = std::clamp(static_cast<int>(f.u_px * 8 / view.node.intrinsics.width_px), 0, 7);
+    const int cy = std::clamp(static_cast<int>(f.v_px * 6 / view.node.intrinsics.height_px), 0, 5);
+    covered[static_cast<std::size_t>(cy * 8 + cx)] = 1;
   }
-  return s;
-}
-
-/// True when the straight segment a-b stays in room cells (sampled every quarter cell).
-bool segment_in_room(const World& world, const std::vector<std::uint8_t>& room, Vec2 a, Vec2 b) {
-  const GridGeometry& g = world.geometry();
-  const double len = std::hypot(b.x - a.x, b.y - a.y);
-  const int n = std::max(1, static_cast<int>(std::ceil(len / (0.25 * g.resolution_m()))));
-  for (int k = 0; k <= n; ++k) {
-    const double u = static_cast<double>(k) / n;
-    const std::optional<Cell> c = g.cell_at({a.x + u * (b.x - a.x), a.y + u * (b.y - a.y)});
-    if (!c || room[g.index_of(*c)] == 0) return false;
-  }
-  return true;
-}
-
-std::vector<Vec2> string_pull(const World& world, const std::vector<std::uint8_t>& room,
-                              const std::vector<Vec2>& path) {
-  std::vector<Vec2> out;
-  if (path.empty()) return out;
-  std::size_t i = 0;
-  out.push_back(path[0]);
-  while (i + 1 < path.size()) {
-    std::size_t j = i + 1;
-    while (j + 1 < path.size() && segment_in_room(world, room, path[i], path[j + 1])) ++j;
-    out.push_back(path[j]);
-    i = j;
-  }
-  return out;
-}
-
-double ate_rmse(const std::vector<StampedPose2>& estimate, const std::vector<StampedPose2>& truth) {
-  const Result<AbsoluteTrajectoryError> ate = absolute_trajectory_error(estimate, truth);
-  return ate ? ate->trans_m.rmse : std::numeric_limits<double>::quiet_NaN();
+  return {static_cast<int>(std::count(covered.begin(), covered.end(), 1)),
+          view.features_with_depth};
 }
 
 }  // namespace
@@ -106,7 +42,8 @@ std::optional<std::string> validate(const TeachAndRepeatOptions& o) {
   if (auto e = validate(o.follower)) return "follower: " + *e;
   if (!positive(o.clearance_m)) return std::string("clearance_m must be > 0");
   if (!positive(o.max_speed_m_per_s)) return std::string("max_speed_m_per_s must be > 0");
-  if (!positive(o.max_turn_rate_rad_per_s)) return std::string("max_turn_rate_rad_per_s must be > 0");
+  if (!positive(o.max_turn_rate_rad_per_s))
+    return std::string("max_turn_rate_rad_per_s must be > 0");
   if (!positive(o.control_period_s)) return std::string("control_period_s must be > 0");
   if (o.steps_per_update < 1) return std::string("steps_per_update must be >= 1");
   if (!std::isfinite(o.neck_pan_rad) || std::abs(o.neck_pan_rad) > std::numbers::pi / 2) {
@@ -124,93 +61,11 @@ std::optional<std::string> validate(const TeachAndRepeatOptions& o) {
   return std::nullopt;
 }
 
-Result<std::vector<Vec2>> plan_route(const World& world, Vec2 from_m, Vec2 to_m,
-                                     double clearance_m) {
-  const GridGeometry& g = world.geometry();
-  std::vector<std::uint8_t> room = room_for_robot(world, clearance_m);
-  const std::optional<Cell> a = g.cell_at(from_m);
-  const std::optional<Cell> b = g.cell_at(to_m);
-  auto describe = [](Vec2 p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; };
-  if (!a || room[g.index_of(*a)] == 0) {
-    return input_error("route: start " + describe(from_m) + " m is closer than clearance_m = " +
-                       std::to_string(clearance_m) + " m to a wall or outside the map");
-  }
-  if (!b || room[g.index_of(*b)] == 0) {
-    return input_error("route: goal " + describe(to_m) + " m is closer than clearance_m = " +
-                       std::to_string(clearance_m) + " m to a wall or outside the map");
-  }
-  const RoomSearch s = search_room(world, *a, std::move(room));
-  const std::size_t bi = g.index_of(*b);
-  if (!std::isfinite(s.dist_m[bi])) {
-    return input_error("route: no path from " + describe(from_m) + " to " + describe(to_m) +
-                       " keeps clearance_m = " + std::to_string(clearance_m) + " m from walls");
-  }
-  std::vector<Vec2> path;
-  for (std::int64_t i = static_cast<std::int64_t>(bi); i >= 0; i = s.parent[static_cast<std::size_t>(i)]) {
-    path.push_back(g.center_of(g.cell_of(static_cast<std::size_t>(i))));
-  }
-  std::reverse(path.begin(), path.end());
-  path.front() = from_m;
-  path.back() = to_m;
-  return string_pull(world, s.room, path);
-}
-
-Result<StartAndGoal> choose_start_and_goal(const World& world, double clearance_m,
-                                           double route_length_m, Rng& rng) {
-  const Result<Pose2> start = random_start_pose(world, clearance_m, rng);
-  if (!start) return start.error();
-  const GridGeometry& g = world.geometry();
-  const Cell sc = g.cell_at_unchecked({start->x, start->y});
-  const RoomSearch s = search_room(world, sc, room_for_robot(world, clearance_m));
-  std::size_t best = g.index_of(sc);
-  double best_gap = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    if (!std::isfinite(s.dist_m[i])) continue;
-    const double gap = std::abs(s.dist_m[i] - route_length_m);
-    if (gap < best_gap) {
-      best_gap = gap;
-      best = i;
-    }
-  }
-  StartAndGoal out;
-  out.goal_m = g.center_of(g.cell_of(best));
-  const Result<std::vector<Vec2>> route =
-      plan_route(world, {start->x, start->y}, out.goal_m, clearance_m);
-  if (!route) return route.error();
-  if (route->size() < 2 || polyline_length_m(*route) < 1.0) {
-    return input_error("start and goal: the robot's room around the start is too small for a route");
-  }
-  const Vec2 first = (*route)[1];
-  out.start = {start->x, start->y, std::atan2(first.y - start->y, first.x - start->x)};
-  out.route_length_m = polyline_length_m(*route);
-  return out;
-}
-
-std::vector<Poster> place_poster_layers(const std::vector<WallFace>& faces,
-                                        const std::vector<WallTexture>& textures,
-                                        const PosterPlacementOptions& options, std::uint64_t seed,
-                                        int layers) {
-  std::vector<Poster> out;
-  for (int layer = 0; layer < layers; ++layer) {
-    for (const Poster& p : place_posters(faces, textures, options,
-                                         seed + static_cast<std::uint64_t>(layer))) {
-      const bool overlaps = std::any_of(out.begin(), out.end(), [&](const Poster& q) {
-        return q.face == p.face && std::abs(q.center_m - p.center_m) <
-                                       0.5 * (q.width_m + p.width_m) + options.margin_m;
-      });
-      if (!overlaps) out.push_back(p);
-    }
-  }
-  return out;
-}
-
-namespace {
-
 /// The simulation of one experiment: the true robot, its odometry, the SLAM and the camera.
-class Experiment {
+class TeachAndRepeatSimulation {
  public:
-  Experiment(const RgbdCamera& camera, const TeachAndRepeatOptions& o, const Pose2& start,
-             std::uint64_t seed)
+  TeachAndRepeatSimulation(const RgbdCamera& camera, const TeachAndRepeatOptions& o,
+                           const Pose2& start, std::uint64_t seed)
       : camera_(camera),
         o_(o),
         robot_(start, o.odometry, Rng(seed).fork(1)),
@@ -222,6 +77,7 @@ class Experiment {
   }
 
   fusion::FusionSlam& slam() { return slam_; }
+  [[nodiscard]] const fusion::FusionSlam& slam() const { return slam_; }
   [[nodiscard]] const Pose2& truth() const { return robot_.true_pose(); }
   [[nodiscard]] Pose2 odometry() const { return robot_.odometry_pose(); }
   [[nodiscard]] double time_s() const { return t_s_; }
@@ -229,17 +85,17 @@ class Experiment {
   [[nodiscard]] const std::vector<StampedPose2>& truth_log() const { return truth_; }
   /// The true pose at an update's stamp (one truth sample per update period).
   [[nodiscard]] Pose2 truth_at(double t_s) const {
-    const auto k = static_cast<std::size_t>(
-        std::llround(t_s / (o_.control_period_s * o_.steps_per_update)));
+    const auto k =
+        static_cast<std::size_t>(std::llround(t_s / (o_.control_period_s * o_.steps_per_update)));
     return truth_[std::min(k, truth_.size() - 1)].pose;
   }
-  std::vector<Vec2>* estimate_path = nullptr;  // where estimates are recorded
+  std::vector<Vec2>* estimate_path = nullptr;  // where estimates are recorded: one of these two
+  std::vector<Vec2> taught_path;
+  std::vector<Vec2> repeated_path;
   std::vector<Vec2> true_path;
   int corrections = 0;  // optimisations seen
 
-  RgbdFrame render() {
-    return camera_.render(robot_.true_pose(), neck_, t_s_, frame_rng_);
-  }
+  RgbdFrame render() { return camera_.render(robot_.true_pose(), neck_, t_s_, frame_rng_); }
   void set_neck(double neck_rad) { neck_ = neck_rad; }
   [[nodiscard]] double neck() const { return neck_; }
 
@@ -317,7 +173,8 @@ class Experiment {
       const double err = normalize_angle(heading_rad - pose_of().theta);
       if (std::abs(err) < 0.01) return Ok{};
       const double period = o_.control_period_s * o_.steps_per_update;
-      const double w = std::clamp(2.0 * err, -o_.max_turn_rate_rad_per_s, o_.max_turn_rate_rad_per_s);
+      const double w =
+          std::clamp(2.0 * err, -o_.max_turn_rate_rad_per_s, o_.max_turn_rate_rad_per_s);
       const double w_capped = std::abs(w * period) > std::abs(err) ? err / period : w;
       if (!drive(0.0, w_capped)) return runtime_error("turn exceeded max_drive_s");
     }
@@ -325,7 +182,7 @@ class Experiment {
 
  private:
   const RgbdCamera& camera_;
-  const TeachAndRepeatOptions& o_;
+  TeachAndRepeatOptions o_;
   DifferentialDriveRobot robot_;
   Rng frame_rng_;
   fusion::FusionSlam slam_;
@@ -336,255 +193,337 @@ class Experiment {
   std::vector<StampedPose2> truth_;
 };
 
-}  // namespace
+const char* describe(TeachAndRepeatStage stage) {
+  switch (stage) {
+    case TeachAndRepeatStage::kTeachToGoal:
+      return "teach: driving to the goal";
+    case TeachAndRepeatStage::kCaptureGoalNode:
+      return "teach: capturing the goal node";
+    case TeachAndRepeatStage::kTeachBack:
+      return "teach: driving back to the start";
+    case TeachAndRepeatStage::kConfirmStartNode:
+      return "repeat: confirming a node of the start cell";
+    case TeachAndRepeatStage::kNavigate:
+      return "repeat: navigating to the goal cell";
+    case TeachAndRepeatStage::kFindGoalNode:
+      return "repeat: searching the goal node";
+    case TeachAndRepeatStage::kDone:
+      return "done";
+  }
+  return "?";
+}
 
-Result<TeachAndRepeatResult> run_teach_and_repeat(
-    const RgbdCamera& camera, const TeachAndRepeatOptions& options, const Pose2& start,
-    Vec2 goal_m, std::uint64_t seed, const std::function<void(const std::string&)>& progress) {
+Result<TeachAndRepeat> TeachAndRepeat::create(const RgbdCamera& camera,
+                                              const TeachAndRepeatOptions& options,
+                                              const Pose2& start, Vec2 goal_m, std::uint64_t seed) {
   if (auto e = validate(options)) return input_error("teach and repeat: " + *e);
-  const Result<std::vector<Vec2>> route =
+  Result<std::vector<Vec2>> route =
       plan_route(camera.world(), {start.x, start.y}, goal_m, options.clearance_m);
   if (!route) return route.error();
-  auto say = [&](const std::string& text) {
-    if (progress) progress(text);
-  };
+  return TeachAndRepeat(camera, options, std::move(*route), start, goal_m, seed);
+}
 
-  TeachAndRepeatRun run;
-  run.seed = seed;
-  run.start = start;
-  run.goal_m = goal_m;
-  run.route_m = *route;
-  run.taught_route_length_m = polyline_length_m(*route);
+TeachAndRepeat::TeachAndRepeat(const RgbdCamera& camera, const TeachAndRepeatOptions& options,
+                               std::vector<Vec2> route, const Pose2& start, Vec2 goal_m,
+                               std::uint64_t seed)
+    : options_(options),
+      sim_(std::make_unique<TeachAndRepeatSimulation>(camera, options, start, seed)) {
+  run_.seed = seed;
+  run_.start = start;
+  run_.goal_m = goal_m;
+  run_.route_m = std::move(route);
+  run_.taught_route_length_m = polyline_length_m(run_.route_m);
+}
 
-  Experiment x(camera, options, start, seed);
+TeachAndRepeat::TeachAndRepeat(TeachAndRepeat&&) noexcept = default;
+TeachAndRepeat& TeachAndRepeat::operator=(TeachAndRepeat&&) noexcept = default;
+TeachAndRepeat::~TeachAndRepeat() = default;
+
+const fusion::FusionSlam& TeachAndRepeat::slam() const { return sim_->slam(); }
+
+Status TeachAndRepeat::step() {
+  Status s = Ok{};
+  switch (stage_) {
+    case TeachAndRepeatStage::kTeachToGoal:
+      s = teach_to_goal();
+      break;
+    case TeachAndRepeatStage::kCaptureGoalNode:
+      s = capture_goal_node();
+      break;
+    case TeachAndRepeatStage::kTeachBack:
+      s = teach_back();
+      break;
+    case TeachAndRepeatStage::kConfirmStartNode:
+      s = confirm_start_node();
+      break;
+    case TeachAndRepeatStage::kNavigate:
+      s = navigate();
+      break;
+    case TeachAndRepeatStage::kFindGoalNode:
+      s = find_goal_node();
+      break;
+    case TeachAndRepeatStage::kDone:
+      return Ok{};
+  }
+  if (!s) {
+    stage_ = TeachAndRepeatStage::kDone;
+    return s;
+  }
+  stage_ = static_cast<TeachAndRepeatStage>(static_cast<int>(stage_) + 1);
+  return Ok{};
+}
+
+// TEACH, Table 5.1 steps 1-5: driven along the route to the goal.
+Status TeachAndRepeat::teach_to_goal() {
+  TeachAndRepeatSimulation& x = *sim_;
+  x.estimate_path = &x.taught_path;
+  auto truth = [&] { return x.truth(); };
+  for (std::size_t i = 1; i < run_.route_m.size(); ++i) {
+    if (Status s = x.go_to(run_.route_m[i], truth, 0.02); !s) return s;
+  }
+  return Ok{};
+}
+
+// Step 6: stopped in a firing field to acquire the goal image node: drive (by the map) into the
+// current cell's firing field; the operator turns the robot round once and keeps the view that
+// makes the best node (goal_view_score).
+Status TeachAndRepeat::capture_goal_node() {
+  TeachAndRepeatSimulation& x = *sim_;
   fusion::FusionSlam& slam = x.slam();
-  ProcessStateMachine process;  // thesis 4.3.4: LEARN while taught
   auto truth = [&] { return x.truth(); };
   auto estimate = [&] { return slam.estimate(); };
+  const Vec2 centre = slam.map().cell(slam.map().current_cell()).centre_m;
+  if (Status s = x.go_to(centre, estimate, 0.03); !s) return s;
+  const double heading0 = x.truth().theta;
+  int best_k = -1;
+  std::pair<int, int> best_score{-1, -1};
+  for (int k = 0; k < 12; ++k) {
+    if (Status s = x.turn_to(heading0 + k * std::numbers::pi / 6.0, truth); !s) return s;
+    const fusion::NodeCreation view = fusion::create_image_node(x.render(), {}, options_.slam.node);
+    if (!view.ok()) continue;
+    const std::pair<int, int> score = goal_view_score(view);
+    if (score > best_score) {
+      best_score = score;
+      best_k = k;
+    }
+  }
+  if (best_k >= 0) {
+    if (Status s = x.turn_to(heading0 + best_k * std::numbers::pi / 6.0, truth); !s) return s;
+    const fusion::FusionCapture c = slam.add_frame(x.render());
+    if (c.stored) {
+      run_.goal_node = c.node_id;
+      run_.goal_cell = slam.image_nodes()[c.node_id].cell;
+      run_.taught_goal_pose = x.truth();
+      return Ok{};
+    }
+  }
+  return runtime_error(
+      "teach and repeat: no view at the goal passes the image-node checks "
+      "(no posters in sight?)");
+}
 
-  // TEACH, Table 5.1 steps 1-6: driven along the route to the goal.
-  say("teach: driving to the goal");
-  x.estimate_path = &run.taught_path_m;
-  for (std::size_t i = 1; i < route->size(); ++i) {
-    if (Status s = x.go_to((*route)[i], truth, 0.02); !s) return s.error();
+// Step 7: driven back to the start in reverse order; there it turns to face the route again.
+Status TeachAndRepeat::teach_back() {
+  TeachAndRepeatSimulation& x = *sim_;
+  auto truth = [&] { return x.truth(); };
+  for (std::size_t i = run_.route_m.size() - 1; i-- > 0;) {
+    if (Status s = x.go_to(run_.route_m[i], truth, 0.02); !s) return s;
   }
-  // Step 6: stopped in a firing field to acquire the goal image node: drive (by the map) into the
-  // current cell's firing field and capture; turn by steps until the view makes a node.
-  {
-    const Vec2 centre = slam.map().cell(slam.map().current_cell()).centre_m;
-    if (Status s = x.go_to(centre, estimate, 0.03); !s) return s.error();
-    // The operator turns the robot round once and keeps the view that makes the best node: the
-    // most coverage cells (8 x 6 over the image, as the matcher's check) with features that have
-    // depth, then the most such features. A node that covers the image well is one the search
-    // can confirm (6.2 item 4).
-    const double heading0 = x.truth().theta;
-    int best_k = -1;
-    std::pair<int, int> best_score{-1, -1};
-    for (int k = 0; k < 12; ++k) {
-      if (Status s = x.turn_to(heading0 + k * std::numbers::pi / 6.0, truth); !s) return s.error();
-      const fusion::NodeCreation view =
-          fusion::create_image_node(x.render(), {}, options.slam.node);
-      if (!view.ok()) continue;
-      std::vector<std::uint8_t> covered(48, 0);
-      for (const fusion::NodeFeature& f : view.node.features) {
-        if (!f.has_depth) continue;
-        const int cx = std::clamp(static_cast<int>(f.u_px * 8 / view.node.intrinsics.width_px), 0, 7);
-        const int cy = std::clamp(static_cast<int>(f.v_px * 6 / view.node.intrinsics.height_px), 0, 5);
-        covered[static_cast<std::size_t>(cy * 8 + cx)] = 1;
-      }
-      const std::pair<int, int> score{
-          static_cast<int>(std::count(covered.begin(), covered.end(), 1)),
-          view.features_with_depth};
-      if (score > best_score) {
-        best_score = score;
-        best_k = k;
-      }
-    }
-    bool stored = false;
-    if (best_k >= 0) {
-      if (Status s = x.turn_to(heading0 + best_k * std::numbers::pi / 6.0, truth); !s) {
-        return s.error();
-      }
-      const fusion::FusionCapture c = slam.add_frame(x.render());
-      if (c.stored) {
-        stored = true;
-        run.goal_node = c.node_id;
-        run.goal_cell = slam.image_nodes()[c.node_id].cell;
-        run.taught_goal_pose = x.truth();
-      }
-    }
-    if (!stored) {
-      return runtime_error("teach and repeat: no view at the goal passes the image-node checks "
-                           "(no posters in sight?)");
-    }
-  }
-  // Step 7: driven back to the start in reverse order; there it turns to face the route again.
-  say("teach: driving back to the start");
-  for (std::size_t i = route->size() - 1; i-- > 0;) {
-    if (Status s = x.go_to((*route)[i], truth, 0.02); !s) return s.error();
-  }
-  if (Status s = x.turn_to(start.theta, truth); !s) return s.error();
+  if (Status s = x.turn_to(run_.start.theta, truth); !s) return s;
+  run_.slam_after_teach = x.slam().statistics();
+  return Ok{};
+}
 
-  run.slam_after_teach = slam.statistics();
-  // REPEAT, step 8: image-node search in the start cell, then navigate to the goal cell.
-  x.estimate_path = &run.repeated_path_m;
-  auto search = [&](std::size_t node_id) -> Status {
-    ++run.search_trials;
-    const std::size_t cell = slam.image_nodes()[node_id].cell;
-    (void)process.handle(process_event::FindImageNode{
-        node_id, slam.map().current_cell() == cell ||
-                     std::hypot(slam.estimate().x - slam.map().cell(cell).centre_m.x,
-                                slam.estimate().y - slam.map().cell(cell).centre_m.y) <
-                         slam.map().options().cell_radius_m});
-    bool confirmed = false;
-    TeachAndRepeatRun::Search record;
-    record.node = node_id;
-    for (int drive = 0; drive < options.max_search_drives; ++drive) {
-      const fusion::StoredImageNode& node = slam.image_nodes()[node_id];
-      const Pose2 target = node.node.placement.T_map_robot;
-      if (Status s = x.go_to({target.x, target.y}, estimate, 0.01); !s) return s;
-      if (Status s = x.turn_to(target.theta, estimate); !s) return s;
-      (void)process.handle(process_event::NodePoseReached{});
-      x.set_neck(node.node.placement.neck_rad);
-      (void)x.drive(0.0, 0.0);  // one update at rest with the neck turned
-      (void)process.handle(process_event::NeckAligned{});
-      ++run.search_captures;
-      const fusion::NodeConfirmation c = slam.confirm_node(node_id, x.render());
-      x.set_neck(options.neck_pan_rad);
-      ++record.captures;
-      record.last_reason = c.reason;
-      if (!c.confirmed) continue;
-      confirmed = true;
-      record.offset_m = std::hypot(c.T_node_robot.x, c.T_node_robot.y);
-      if (record.offset_m <= options.search_tolerance_m) break;
-    }
-    (void)process.handle(confirmed ? ProcessEvent{process_event::NodeConfirmed{}}
-                                   : ProcessEvent{process_event::NodeNotConfirmed{}});
-    if (confirmed) ++run.search_successes;
-    record.confirmed = confirmed;
-    const Pose2 node_truth = x.truth_at(slam.image_nodes()[node_id].node.t_s);
-    record.true_offset_m = std::hypot(x.truth().x - node_truth.x, x.truth().y - node_truth.y);
-    run.searches.push_back(record);
-    return Ok{};
-  };
-  // The image-node search in the start cell (6.2 item 4): the stored node of the current cell with
-  // the most features with depth.
-  say("repeat: confirming a node of the start cell");
-  {
-    const std::vector<std::size_t> here = slam.nodes_in_cell(slam.map().current_cell());
-    std::size_t best = 0;
-    int best_features = -1;
-    for (std::size_t id : here) {
-      const int f = slam.image_nodes()[id].node.features_with_depth();
-      if (f > best_features) {
-        best_features = f;
-        best = id;
-      }
-    }
-    if (best_features >= 0) {
-      if (Status s = search(best); !s) return s.error();
+// REPEAT, step 8: the image-node search (thesis 4.3.4, 6.2 item 4): drive onto the node's pose by
+// the estimate, turn the neck to its angle, confirm by matching; drive again while the match shows
+// an offset beyond search_tolerance_m.
+Status TeachAndRepeat::search(std::size_t node_id) {
+  TeachAndRepeatSimulation& x = *sim_;
+  fusion::FusionSlam& slam = x.slam();
+  auto estimate = [&] { return slam.estimate(); };
+  ++run_.search_trials;
+  bool confirmed = false;
+  TeachAndRepeatRun::Search record;
+  record.node = node_id;
+  for (int drive = 0; drive < options_.max_search_drives; ++drive) {
+    const fusion::StoredImageNode& node = slam.image_nodes()[node_id];
+    const Pose2 target = node.node.placement.T_map_robot;
+    if (Status s = x.go_to({target.x, target.y}, estimate, 0.01); !s) return s;
+    if (Status s = x.turn_to(target.theta, estimate); !s) return s;
+    x.set_neck(node.node.placement.neck_rad);
+    (void)x.drive(0.0, 0.0);  // one update at rest with the neck turned
+    ++run_.search_captures;
+    const fusion::NodeConfirmation c = slam.confirm_node(node_id, x.render());
+    x.set_neck(options_.neck_pan_rad);
+    ++record.captures;
+    record.last_reason = c.reason;
+    if (!c.confirmed) continue;
+    confirmed = true;
+    record.offset_m = std::hypot(c.T_node_robot.x, c.T_node_robot.y);
+    if (record.offset_m <= options_.search_tolerance_m) break;
+  }
+  if (confirmed) ++run_.search_successes;
+  record.confirmed = confirmed;
+  const Pose2 node_truth = x.truth_at(slam.image_nodes()[node_id].node.t_s);
+  record.true_offset_m = std::hypot(x.truth().x - node_truth.x, x.truth().y - node_truth.y);
+  run_.searches.push_back(record);
+  return Ok{};
+}
+
+// Step 8, first half: the image-node search in the start cell (6.2 item 4), for the stored node of
+// the current cell with the most features with depth.
+Status TeachAndRepeat::confirm_start_node() {
+  TeachAndRepeatSimulation& x = *sim_;
+  const fusion::FusionSlam& slam = x.slam();
+  x.estimate_path = &x.repeated_path;
+  std::size_t best = 0;
+  int best_features = -1;
+  for (std::size_t id : slam.nodes_in_cell(slam.map().current_cell())) {
+    const int f = slam.image_nodes()[id].node.features_with_depth();
+    if (f > best_features) {
+      best_features = f;
+      best = id;
     }
   }
+  if (best_features < 0) return Ok{};
+  return search(best);
+}
 
-  say("repeat: navigating to the goal cell");
-  run.start_cell = slam.map().current_cell();
+// Step 8: navigate to the goal cell: the wavefront over the learned cells as written (thesis
+// 4.3.5), the non-zigzag polyline (6.2 item 3) and pure pursuit on the estimate, replanned from
+// the current estimate after each correction.
+Status TeachAndRepeat::navigate() {
+  TeachAndRepeatSimulation& x = *sim_;
+  const fusion::FusionSlam& slam = x.slam();
+  run_.start_cell = slam.map().current_cell();
   const double path_at_start = x.path_m();
-  {
-    (void)process.handle(process_event::GoToCell{run.goal_cell});
-    bool planned = false;
-    std::optional<PathFollower> follower;
-    std::vector<std::size_t> cell_path;
-    int seen_corrections = -1;
-    CellPolylineOptions poly;
-    poly.cell_radius_m = slam.map().options().cell_radius_m;
-    x.start_drive();
-    for (;;) {
-      if (!follower || seen_corrections != x.corrections) {
-        // (Re)plan over the learned cells from the current estimate: the wavefront as written
-        // (thesis 4.3.5), then the non-zigzag polyline (6.2 item 3).
-        seen_corrections = x.corrections;
-        const CellGraph graph = slam.map().graph(fusion::CellAdjacency::kTraversed);
-        const WavefrontField field = wavefront(graph, run.goal_cell);
-        const Pose2 p = slam.estimate();
-        const std::size_t here = graph.nearest({p.x, p.y});
-        cell_path = wavefront_path(graph, field, here);
-        if (cell_path.empty()) {
-          (void)process.handle(process_event::NoPath{});
-          return runtime_error("teach and repeat: the wavefront finds no path to the goal cell");
-        }
-        if (!planned) {
-          run.shortest_cell_path_m = cell_path_length_m(graph, cell_path);
-          planned = true;
-        }
-        follower.emplace(cell_path_polyline(graph, cell_path, {p.x, p.y},
-                                            graph.centres_m[run.goal_cell], poly),
-                         options.follower);
+  bool planned = false;
+  std::optional<PathFollower> follower;
+  int seen_corrections = -1;
+  CellPolylineOptions poly;
+  poly.cell_radius_m = slam.map().options().cell_radius_m;
+  x.start_drive();
+  for (;;) {
+    if (!follower || seen_corrections != x.corrections) {
+      seen_corrections = x.corrections;
+      const CellGraph graph = slam.map().graph(CellAdjacency::kTraversed);
+      const WavefrontField field = wavefront(graph, run_.goal_cell);
+      const Pose2 p = slam.estimate();
+      const std::vector<std::size_t> cell_path =
+          wavefront_path(graph, field, graph.nearest({p.x, p.y}));
+      if (cell_path.empty()) {
+        return runtime_error("teach and repeat: the wavefront finds no path to the goal cell");
       }
-      const VelocityCommand cmd = follower->command(slam.estimate());
-      if (follower->arrived()) break;
-      if (!x.drive(cmd.v_m_per_s, cmd.omega_rad_per_s)) {
-        return runtime_error("teach and repeat: navigation exceeded max_drive_s");
+      if (!planned) {
+        run_.shortest_cell_path_m = cell_path_length_m(graph, cell_path);
+        planned = true;
       }
+      follower.emplace(
+          cell_path_polyline(graph, cell_path, {p.x, p.y}, graph.centres_m[run_.goal_cell], poly),
+          options_.follower);
     }
-    (void)process.handle(process_event::GoalCellReached{});
+    const VelocityCommand cmd = follower->command(slam.estimate());
+    if (follower->arrived()) break;
+    if (!x.drive(cmd.v_m_per_s, cmd.omega_rad_per_s)) {
+      return runtime_error("teach and repeat: navigation exceeded max_drive_s");
+    }
   }
-  run.navigation_path_m = x.path_m() - path_at_start;
-  run.path_ratio = run.shortest_cell_path_m > 0.0 ? run.navigation_path_m / run.shortest_cell_path_m
-                                                  : 0.0;
-  {
-    // Reached the goal cell: the robot's true position lies within the inscribed circle of the
-    // goal cell as taught (the cell's centre carried from the goal node's estimated pose to its
-    // true pose).
-    const Pose2 node_est = slam.image_nodes()[run.goal_node].node.placement.T_map_robot;
-    const Vec2 c = slam.map().cell(run.goal_cell).centre_m;
-    const Vec2 c_in_node = node_est.inverse() * c;
-    const Vec2 c_true = run.taught_goal_pose * c_in_node;
-    run.goal_cell_distance_m = std::hypot(x.truth().x - c_true.x, x.truth().y - c_true.y);
-    run.reached_goal_cell = run.goal_cell_distance_m <= 0.5 * slam.map().options().cell_radius_m;
-  }
+  run_.navigation_path_m = x.path_m() - path_at_start;
+  run_.path_ratio =
+      run_.shortest_cell_path_m > 0.0 ? run_.navigation_path_m / run_.shortest_cell_path_m : 0.0;
+  // Reached the goal cell: the robot's true position lies within the inscribed circle of the goal
+  // cell as taught (the cell's centre carried from the goal node's estimated pose to its true
+  // pose).
+  const Pose2 node_est = slam.image_nodes()[run_.goal_node].node.placement.T_map_robot;
+  const Vec2 c_in_node = node_est.inverse() * slam.map().cell(run_.goal_cell).centre_m;
+  const Vec2 c_true = run_.taught_goal_pose * c_in_node;
+  run_.goal_cell_distance_m = std::hypot(x.truth().x - c_true.x, x.truth().y - c_true.y);
+  run_.reached_goal_cell = run_.goal_cell_distance_m <= 0.5 * slam.map().options().cell_radius_m;
+  return Ok{};
+}
 
-  // Step 8, second half: the image-node search for the goal node.
-  say("repeat: searching the goal node");
-  if (Status s = search(run.goal_node); !s) return s.error();
+// Step 8, second half: the image-node search for the goal node; step 9: the final figures.
+Status TeachAndRepeat::find_goal_node() {
+  if (Status s = search(run_.goal_node); !s) return s;
+  finish();
+  return Ok{};
+}
 
-  // Step 9: the final pose and the internal state.
-  run.final_pose = x.truth();
-  run.final_error_x_m = run.final_pose.x - run.taught_goal_pose.x;
-  run.final_error_y_m = run.final_pose.y - run.taught_goal_pose.y;
-  run.final_error_m = std::hypot(run.final_error_x_m, run.final_error_y_m);
-  run.final_heading_error_rad = normalize_angle(run.final_pose.theta - run.taught_goal_pose.theta);
-  run.odometry_error_at_goal_m =
+void TeachAndRepeat::finish() {
+  const TeachAndRepeatSimulation& x = *sim_;
+  const fusion::FusionSlam& slam = x.slam();
+  run_.final_pose = x.truth();
+  run_.final_error_x_m = run_.final_pose.x - run_.taught_goal_pose.x;
+  run_.final_error_y_m = run_.final_pose.y - run_.taught_goal_pose.y;
+  run_.final_error_m = std::hypot(run_.final_error_x_m, run_.final_error_y_m);
+  run_.final_heading_error_rad =
+      normalize_angle(run_.final_pose.theta - run_.taught_goal_pose.theta);
+  run_.odometry_error_at_goal_m =
       std::hypot(x.odometry().x - x.truth().x, x.odometry().y - x.truth().y);
-  run.estimate_error_at_goal_m =
+  run_.estimate_error_at_goal_m =
       std::hypot(slam.estimate().x - x.truth().x, slam.estimate().y - x.truth().y);
 
   // Drift correction: the pose graph vs odometry alone, against the truth at the same stamps.
-  run.corrected_trajectory = slam.corrected_trajectory();
-  {
-    std::unordered_map<std::int64_t, Pose2> truth_at;
-    const double period = options.control_period_s * options.steps_per_update;
-    for (const StampedPose2& p : x.truth_log()) truth_at[std::llround(p.t_s / period)] = p.pose;
-    std::vector<StampedPose2> est, odo, ref;
-    const std::vector<StampedPose2> odometry = slam.odometry_trajectory();
-    for (std::size_t i = 0; i < run.corrected_trajectory.size(); ++i) {
-      const auto it = truth_at.find(std::llround(run.corrected_trajectory[i].t_s / period));
-      if (it == truth_at.end()) continue;
-      // Unique, increasing stamps for the association (several graph nodes can share an update).
-      const double t = static_cast<double>(i);
-      est.push_back({t, run.corrected_trajectory[i].pose});
-      odo.push_back({t, odometry[i].pose});
-      ref.push_back({t, it->second});
-    }
-    run.ate_corrected_m = ate_rmse(est, ref);
-    run.ate_odometry_m = ate_rmse(odo, ref);
+  run_.corrected_trajectory = slam.corrected_trajectory();
+  std::unordered_map<std::int64_t, Pose2> truth_at;
+  const double period = options_.control_period_s * options_.steps_per_update;
+  for (const StampedPose2& p : x.truth_log()) truth_at[std::llround(p.t_s / period)] = p.pose;
+  std::vector<StampedPose2> est, odo, ref;
+  const std::vector<StampedPose2> odometry = slam.odometry_trajectory();
+  for (std::size_t i = 0; i < run_.corrected_trajectory.size(); ++i) {
+    const auto it = truth_at.find(std::llround(run_.corrected_trajectory[i].t_s / period));
+    if (it == truth_at.end()) continue;
+    // Unique, increasing stamps for the association (several graph nodes can share an update).
+    const double t = static_cast<double>(i);
+    est.push_back({t, run_.corrected_trajectory[i].pose});
+    odo.push_back({t, odometry[i].pose});
+    ref.push_back({t, it->second});
   }
-  run.cells = slam.map().cell_count();
-  run.image_nodes = slam.image_nodes().size();
-  run.pose_nodes = slam.map().pose_nodes().size();
-  run.slam = slam.statistics();
-  run.duration_s = x.time_s();
-  run.true_path_m = x.true_path;
-  return TeachAndRepeatResult{std::move(run), std::move(slam)};
+  const Result<DriftCorrectionScore> score = score_drift_correction(est, odo, ref);
+  run_.ate_corrected_m =
+      score ? score->slam.trans_m.rmse : std::numeric_limits<double>::quiet_NaN();
+  run_.ate_odometry_m =
+      score ? score->odometry.trans_m.rmse : std::numeric_limits<double>::quiet_NaN();
+  run_.ate_ratio = score ? score->odometry_over_slam() : 0.0;
+  run_.cells = slam.map().cell_count();
+  run_.image_nodes = slam.image_nodes().size();
+  run_.pose_nodes = slam.map().pose_nodes().size();
+  run_.slam = slam.statistics();
+  run_.duration_s = x.time_s();
+  run_.true_path_m = x.true_path;
+  run_.taught_path_m = x.taught_path;
+  run_.repeated_path_m = x.repeated_path;
+}
+
+TeachAndRepeatResult TeachAndRepeat::take_result() && {
+  return TeachAndRepeatResult{std::move(run_), std::move(sim_->slam())};
+}
+
+Result<TeachAndRepeatResult> run_teach_and_repeat(
+    const RgbdCamera& camera, const TeachAndRepeatOptions& options, const Pose2& start, Vec2 goal_m,
+    std::uint64_t seed, const std::function<void(const std::string&)>& progress) {
+  Result<TeachAndRepeat> mission = TeachAndRepeat::create(camera, options, start, goal_m, seed);
+  if (!mission) return mission.error();
+  while (!mission->done()) {
+    if (progress) progress(describe(mission->stage()));
+    if (Status s = mission->step(); !s) return s.error();
+  }
+  return std::move(*mission).take_result();
+}
+
+TeachAndRepeatSummary summarize(const std::vector<TeachAndRepeatRun>& runs) {
+  TeachAndRepeatSummary s;
+  s.runs = static_cast<int>(runs.size());
+  s.min_ate_ratio = 1e300;
+  for (const TeachAndRepeatRun& r : runs) {
+    s.reached_goal_cell += r.reached_goal_cell ? 1 : 0;
+    s.search_trials += r.search_trials;
+    s.search_successes += r.search_successes;
+    s.max_final_error_m = std::max(s.max_final_error_m, r.final_error_m);
+    s.max_path_ratio = std::max(s.max_path_ratio, r.path_ratio);
+    s.min_ate_ratio = std::min(s.min_ate_ratio, r.ate_ratio);
+  }
+  return s;
 }
 
 }  // namespace tessera

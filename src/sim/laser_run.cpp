@@ -175,8 +175,82 @@ std::optional<std::string> validate(const LaserRunOptions& o) {
   return std::nullopt;
 }
 
-Result<SimulatedLaserRun> simulate_laser_run(const World& world, const LaserRunOptions& o,
-                                             std::uint64_t seed) {
+/// What a LaserRun holds; on the heap, so that the profile's references into it survive a move.
+class LaserRunState {
+ public:
+  LaserRunState(const World& world, const LaserRunOptions& o, std::uint64_t seed, Tour tour,
+                const Pose2& start)
+      : world_(world),
+        o_(o),
+        start_(start),
+        truth_(start),
+        odometry_(start),
+        odometry_rng_(Rng(seed).fork(kOdometryStream)),
+        lidar_rng_(Rng(seed).fork(kLidarStream)),
+        dt_s_(1.0 / (o.scan_rate_hz * o.steps_per_scan)) {
+    run_.tour = std::move(tour);
+    profile_.emplace(run_.tour.pieces, o_);
+    record();
+  }
+
+  [[nodiscard]] bool done() const {
+    if (profile_->done(state_)) return true;
+    const double next_t_s = static_cast<double>(scan_index_ + 1) / o_.scan_rate_hz;
+    if (o_.max_duration_s > 0.0 && next_t_s > o_.max_duration_s) return true;
+    return o_.max_path_length_m > 0.0 && run_.path_length_m >= o_.max_path_length_m;
+  }
+
+  void step() {
+    TESSERA_ASSERT(!done());
+    for (int k = 0; k < o_.steps_per_scan; ++k) {
+      profile_->step(state_, dt_s_);
+      const Pose2 next = profile_->pose(state_, start_);
+      const Pose2 T_prev_cur = between(truth_, next);
+      run_.path_length_m += std::hypot(T_prev_cur.x, T_prev_cur.y);
+      run_.turned_rad += std::abs(T_prev_cur.theta);
+      odometry_ = odometry_ * noisy_odometry_increment(T_prev_cur, o_.odometry, odometry_rng_);
+      truth_ = next;
+    }
+    // When the tour ends within the interval, this last scan is taken at rest.
+    ++scan_index_;
+    record();
+  }
+
+  [[nodiscard]] const SimulatedLaserRun& run() const { return run_; }
+  SimulatedLaserRun& run() { return run_; }
+  [[nodiscard]] bool tour_done() const { return profile_->done(state_); }
+
+ private:
+  void record() {
+    const double t_s = static_cast<double>(scan_index_) / o_.scan_rate_hz;
+    StampedScan s;
+    s.t_s = t_s;
+    s.odometry = odometry_;
+    s.laser_in_robot = o_.laser_in_robot;
+    s.scan = simulate_scan(world_, truth_ * o_.laser_in_robot, o_.lidar, lidar_rng_);
+    run_.log.scans.push_back(std::move(s));
+    run_.log.odometry.push_back({t_s, odometry_});
+    run_.truth.push_back({t_s, truth_});
+    run_.duration_s = t_s;
+    run_.tour_completed = profile_->done(state_);
+  }
+
+  const World& world_;
+  LaserRunOptions o_;
+  Pose2 start_;
+  Pose2 truth_;
+  Pose2 odometry_;
+  Rng odometry_rng_;
+  Rng lidar_rng_;
+  double dt_s_;
+  SimulatedLaserRun run_;
+  std::optional<SpeedProfile> profile_;
+  DriveState state_;
+  std::int64_t scan_index_ = 0;
+};
+
+Result<LaserRun> LaserRun::create(const World& world, const LaserRunOptions& o,
+                                  std::uint64_t seed) {
   if (auto problem = validate(o)) return input_error("laser run options: " + *problem);
   const Rng root(seed);
   Pose2 start;
@@ -191,50 +265,25 @@ Result<SimulatedLaserRun> simulate_laser_run(const World& world, const LaserRunO
   }
   Result<Tour> tour = plan_tour(world, start, o.tour);
   if (!tour) return tour.error();
+  return LaserRun(std::make_unique<LaserRunState>(world, o, seed, std::move(*tour), start));
+}
 
-  SimulatedLaserRun run;
-  run.tour = std::move(tour).value();
-  Rng odometry_rng = root.fork(kOdometryStream);
-  Rng lidar_rng = root.fork(kLidarStream);
-  const SpeedProfile profile(run.tour.pieces, o);
-  const double dt_s = 1.0 / (o.scan_rate_hz * o.steps_per_scan);
+LaserRun::LaserRun(std::unique_ptr<LaserRunState> state) : state_(std::move(state)) {}
+LaserRun::LaserRun(LaserRun&&) noexcept = default;
+LaserRun& LaserRun::operator=(LaserRun&&) noexcept = default;
+LaserRun::~LaserRun() = default;
 
-  Pose2 truth = start;
-  Pose2 odometry = start;
-  const auto record = [&](std::int64_t scan_index) {
-    const double t_s = static_cast<double>(scan_index) / o.scan_rate_hz;
-    StampedScan s;
-    s.t_s = t_s;
-    s.odometry = odometry;
-    s.laser_in_robot = o.laser_in_robot;
-    s.scan = simulate_scan(world, truth * o.laser_in_robot, o.lidar, lidar_rng);
-    run.log.scans.push_back(std::move(s));
-    run.log.odometry.push_back({t_s, odometry});
-    run.truth.push_back({t_s, truth});
-    run.duration_s = t_s;
-  };
+bool LaserRun::done() const { return state_->done(); }
+void LaserRun::step() { state_->step(); }
+const SimulatedLaserRun& LaserRun::run() const { return state_->run(); }
+SimulatedLaserRun LaserRun::take_run() && { return std::move(state_->run()); }
 
-  DriveState state;
-  std::int64_t scan_index = 0;
-  record(scan_index);
-  while (!profile.done(state)) {
-    const double next_t_s = static_cast<double>(scan_index + 1) / o.scan_rate_hz;
-    if (o.max_duration_s > 0.0 && next_t_s > o.max_duration_s) break;
-    if (o.max_path_length_m > 0.0 && run.path_length_m >= o.max_path_length_m) break;
-    for (int k = 0; k < o.steps_per_scan; ++k) {
-      profile.step(state, dt_s);
-      const Pose2 next = profile.pose(state, start);
-      const Pose2 T_prev_cur = between(truth, next);
-      run.path_length_m += std::hypot(T_prev_cur.x, T_prev_cur.y);
-      run.turned_rad += std::abs(T_prev_cur.theta);
-      odometry = odometry * noisy_odometry_increment(T_prev_cur, o.odometry, odometry_rng);
-      truth = next;
-    }
-    // When the tour ends within the interval, this last scan is taken at rest.
-    record(++scan_index);
-  }
-  run.tour_completed = profile.done(state);
-  return run;
+Result<SimulatedLaserRun> simulate_laser_run(const World& world, const LaserRunOptions& o,
+                                             std::uint64_t seed) {
+  Result<LaserRun> run = LaserRun::create(world, o, seed);
+  if (!run) return run.error();
+  while (!run->done()) run->step();
+  return std::move(*run).take_run();
 }
 
 }  // namespace tessera

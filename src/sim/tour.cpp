@@ -6,13 +6,12 @@
 #include <functional>
 #include <limits>
 #include <numbers>
-#include <queue>
 #include <sstream>
 #include <utility>
 
 #include "tessera/core/angle.hpp"
 #include "tessera/core/assert.hpp"
-#include "tessera/grid/ray_cast.hpp"
+#include "tessera/nav/route_planner.hpp"
 
 namespace tessera {
 namespace {
@@ -130,106 +129,52 @@ std::vector<std::uint8_t> component_of(const GridGeometry& g, const std::vector<
   return reached;
 }
 
-/// Dijkstra over the cells of a mask, 8-connected (steps of 1 and sqrt(2) cells); a diagonal step
-/// needs both cells beside it, so a path never cuts a corner of a cell outside the mask and the
-/// straight segment between two consecutive cell centres lies in mask cells. Buffers are reused
-/// between searches (stamped with a generation number).
-class MaskDijkstra {
- public:
-  MaskDijkstra(const GridGeometry& g, const std::vector<std::uint8_t>& mask)
-      : g_(g), mask_(mask), cost_(g.size()), parent_(g.size()), stamp_(g.size(), 0) {}
+/// Step 2's lattice: blocks of `block` cells a side, and in each the waypoint (the reachable cell
+/// nearest the block's centre; ties: first in row-major order).
+struct WaypointLattice {
+  int block = 1;
+  int blocks_x = 0;
+  int blocks_y = 0;
+  std::vector<Cell> waypoints;
+  /// waypoint_of_block[b]: the waypoint's index in `waypoints`, -1 for a block without one.
+  std::vector<std::int64_t> waypoint_of_block;
 
-  /// Searches from `start` until `stop(cell)` is true for a settled cell; returns that cell, or
-  /// nullopt when none is reachable. Ties are settled in order of cell index.
-  template <typename Stop>
-  std::optional<Cell> search(Cell start, Stop&& stop) {
-    ++generation_;
-    using Entry = std::pair<double, std::size_t>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-    const std::size_t s = g_.index_of(start);
-    discover(s, 0.0, s);
-    open.push({0.0, s});
-    while (!open.empty()) {
-      const auto [cost, i] = open.top();
-      open.pop();
-      if (cost > cost_[i]) continue;  // stale entry
-      const Cell c = g_.cell_of(i);
-      if (stop(c)) return c;
-      for (std::size_t k = 0; k < kNeighbors8.size(); ++k) {
-        const Cell d = kNeighbors8[k];
-        const Cell n = c + d;
-        if (!in_mask(n)) continue;
-        const bool diagonal = d.x != 0 && d.y != 0;
-        if (diagonal && !(in_mask({c.x + d.x, c.y}) && in_mask({c.x, c.y + d.y}))) continue;
-        const double next_cost = cost + (diagonal ? kSqrt2 : 1.0);
-        const std::size_t j = g_.index_of(n);
-        if (stamp_[j] == generation_ && cost_[j] <= next_cost) continue;
-        discover(j, next_cost, i);
-        open.push({next_cost, j});
-      }
-    }
-    return std::nullopt;
+  [[nodiscard]] std::size_t block_index(Cell c) const {
+    return static_cast<std::size_t>(c.y / block) * static_cast<std::size_t>(blocks_x) +
+           static_cast<std::size_t>(c.x / block);
   }
-
-  /// The path of the last search from its start to `goal` (a settled cell), both inclusive.
-  [[nodiscard]] std::vector<Cell> path_to(Cell goal) const {
-    std::vector<Cell> path;
-    std::size_t i = g_.index_of(goal);
-    TESSERA_ASSERT(stamp_[i] == generation_);
-    for (;;) {
-      path.push_back(g_.cell_of(i));
-      if (parent_[i] == i) break;
-      i = parent_[i];
-    }
-    std::reverse(path.begin(), path.end());
-    return path;
-  }
-
- private:
-  [[nodiscard]] bool in_mask(Cell c) const { return g_.contains(c) && mask_[g_.index_of(c)] != 0; }
-  void discover(std::size_t i, double cost, std::size_t parent) {
-    stamp_[i] = generation_;
-    cost_[i] = cost;
-    parent_[i] = parent;
-  }
-
-  const GridGeometry& g_;
-  const std::vector<std::uint8_t>& mask_;
-  std::vector<double> cost_;
-  std::vector<std::size_t> parent_;
-  std::vector<std::uint32_t> stamp_;
-  std::uint32_t generation_ = 0;
 };
 
-/// True when every cell the segment a -> b passes through (corner touches included) is in the
-/// mask.
-bool segment_in_mask(const GridGeometry& g, const std::vector<std::uint8_t>& mask, Vec2 a, Vec2 b) {
-  bool inside = true;
-  traverse_ray(g, a, b, [&](Cell c, double, double) {
-    inside = g.contains(c) && mask[g.index_of(c)] != 0;
-    return inside;
-  });
-  return inside;
-}
-
-/// String pulling: from each kept vertex, the path goes straight to the furthest following vertex
-/// it can reach along a segment inside the mask (extending one vertex at a time). Keeps the first
-/// and last points. Only for a path that never doubles back (a shortest path): one that goes into
-/// a dead end and out again would be pulled past the dead end. Cost: O(points * segment length in
-/// cells).
-std::vector<Vec2> string_pull(const GridGeometry& g, const std::vector<std::uint8_t>& mask,
-                              const std::vector<Vec2>& points) {
-  std::vector<Vec2> out;
-  if (points.empty()) return out;
-  out.push_back(points.front());
-  std::size_t i = 0;
-  while (i + 1 < points.size()) {
-    std::size_t j = i + 1;
-    while (j + 1 < points.size() && segment_in_mask(g, mask, points[i], points[j + 1])) ++j;
-    if ((points[j] - out.back()).norm() > kTinyLengthM) out.push_back(points[j]);
-    i = j;
+WaypointLattice lattice_waypoints(const GridGeometry& g, const std::vector<std::uint8_t>& reachable,
+                                  double spacing_m) {
+  WaypointLattice l;
+  l.block = std::max(1, static_cast<int>(std::lround(spacing_m / g.resolution_m())));
+  const int block = l.block;
+  l.blocks_x = (g.width() + block - 1) / block;
+  l.blocks_y = (g.height() + block - 1) / block;
+  const std::size_t block_count =
+      static_cast<std::size_t>(l.blocks_x) * static_cast<std::size_t>(l.blocks_y);
+  std::vector<std::int64_t> best_cell(block_count, -1);
+  std::vector<double> best_d2(block_count, std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    if (reachable[i] == 0) continue;
+    const Cell c = g.cell_of(i);
+    const double cx = (c.x / block) * block + 0.5 * block - 0.5;  // block centre, in cells
+    const double cy = (c.y / block) * block + 0.5 * block - 0.5;
+    const double d2 = (c.x - cx) * (c.x - cx) + (c.y - cy) * (c.y - cy);
+    const std::size_t b = l.block_index(c);
+    if (d2 < best_d2[b]) {
+      best_d2[b] = d2;
+      best_cell[b] = static_cast<std::int64_t>(i);
+    }
   }
-  return out;
+  l.waypoint_of_block.assign(block_count, -1);
+  for (std::size_t b = 0; b < block_count; ++b) {
+    if (best_cell[b] < 0) continue;
+    l.waypoint_of_block[b] = static_cast<std::int64_t>(l.waypoints.size());
+    l.waypoints.push_back(g.cell_of(static_cast<std::size_t>(best_cell[b])));
+  }
+  return l;
 }
 
 double heading_of(Vec2 d) { return std::atan2(d.y, d.x); }
@@ -437,40 +382,12 @@ Result<Tour> plan_tour(const World& world, const Pose2& start, const TourOptions
   }
   const std::vector<std::uint8_t> reachable = component_of(g, room, *start_cell);
 
-  // Step 2: one waypoint per lattice block, the reachable cell nearest the block's centre (ties:
-  // first in row-major order).
-  const int block =
-      std::max(1, static_cast<int>(std::lround(o.waypoint_spacing_m / g.resolution_m())));
-  const int blocks_x = (g.width() + block - 1) / block;
-  const int blocks_y = (g.height() + block - 1) / block;
-  const auto block_index = [&](Cell c) {
-    return static_cast<std::size_t>(c.y / block) * static_cast<std::size_t>(blocks_x) +
-           static_cast<std::size_t>(c.x / block);
-  };
-  const std::size_t block_count =
-      static_cast<std::size_t>(blocks_x) * static_cast<std::size_t>(blocks_y);
-  std::vector<std::int64_t> best_cell(block_count, -1);
-  std::vector<double> best_d2(block_count, std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    if (reachable[i] == 0) continue;
-    const Cell c = g.cell_of(i);
-    const double cx = (c.x / block) * block + 0.5 * block - 0.5;  // block centre, in cells
-    const double cy = (c.y / block) * block + 0.5 * block - 0.5;
-    const double d2 = (c.x - cx) * (c.x - cx) + (c.y - cy) * (c.y - cy);
-    const std::size_t b = block_index(c);
-    if (d2 < best_d2[b]) {
-      best_d2[b] = d2;
-      best_cell[b] = static_cast<std::int64_t>(i);
-    }
-  }
-  // waypoint_of_block[b]: the waypoint's index in `waypoints`, -1 for a block without one.
-  std::vector<Cell> waypoints;
-  std::vector<std::int64_t> waypoint_of_block(block_count, -1);
-  for (std::size_t b = 0; b < block_count; ++b) {
-    if (best_cell[b] < 0) continue;
-    waypoint_of_block[b] = static_cast<std::int64_t>(waypoints.size());
-    waypoints.push_back(g.cell_of(static_cast<std::size_t>(best_cell[b])));
-  }
+  // Step 2: one waypoint per lattice block.
+  const WaypointLattice lattice = lattice_waypoints(g, reachable, o.waypoint_spacing_m);
+  const int block = lattice.block, blocks_x = lattice.blocks_x, blocks_y = lattice.blocks_y;
+  const auto block_index = [&](Cell c) { return lattice.block_index(c); };
+  const std::vector<Cell>& waypoints = lattice.waypoints;
+  const std::vector<std::int64_t>& waypoint_of_block = lattice.waypoint_of_block;
   std::vector<std::uint8_t> is_waypoint(g.size(), 0);
   for (const Cell w : waypoints) is_waypoint[g.index_of(w)] = 1;
 

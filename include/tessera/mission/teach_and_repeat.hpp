@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,7 @@
 #include "tessera/core/stamped_pose2.hpp"
 #include "tessera/core/vec2.hpp"
 #include "tessera/fusion/fusion_slam.hpp"
+#include "tessera/mission/teach_and_repeat_setup.hpp"
 #include "tessera/nav/path_follower.hpp"
 #include "tessera/sensors/odometry_model.hpp"
 #include "tessera/sensors/thesis_odometry.hpp"
@@ -72,72 +74,46 @@ struct TeachAndRepeatOptions {
 /// Empty when usable; otherwise names the field and the rule it breaks.
 [[nodiscard]] std::optional<std::string> validate(const TeachAndRepeatOptions& o);
 
-/// A drivable route in `world` from `from_m` to `to_m`: a shortest path over the cells at least
-/// clearance_m from every wall (sim/tour.hpp room_for_robot; 8-connected, no corner cutting),
-/// shortened by string pulling. Starts with from_m and ends with to_m. Input error when either end
-/// has no room or they are not connected. Cost: one Dijkstra search over the grid.
-[[nodiscard]] Result<std::vector<Vec2>> plan_route(const World& world, Vec2 from_m, Vec2 to_m,
-                                                   double clearance_m);
-
-/// A start and goal for the experiment: the start a random room cell of the largest component, the
-/// goal the room cell whose route length from the start is nearest route_length_m (the thesis'
-/// route: about 7.4 m + 2.3 m). The start heading faces the route's first leg.
-struct StartAndGoal {
-  Pose2 start;
-  Vec2 goal_m;
-  double route_length_m = 0.0;
-};
-[[nodiscard]] Result<StartAndGoal> choose_start_and_goal(const World& world, double clearance_m,
-                                                         double route_length_m, Rng& rng);
-
-/// Posters for the experiment's world: `layers` passes of sim/poster.hpp's place_posters (seeds
-/// seed, seed + 1, ...), a poster of a later pass kept only where it does not overlap (with
-/// margin_m) one already on its face. One pass hangs at most one poster per wall face, which leaves
-/// long walls mostly blank; the thesis' robot drove past desks and cabinets. Deterministic.
-[[nodiscard]] std::vector<Poster> place_poster_layers(const std::vector<WallFace>& faces,
-                                                      const std::vector<WallTexture>& textures,
-                                                      const PosterPlacementOptions& options,
-                                                      std::uint64_t seed, int layers);
-
 /// Per run, the figures of the thesis' Tables 5.2-5.4 and the bars.
 struct TeachAndRepeatRun {
   std::uint64_t seed = 0;
   Pose2 start;
   Vec2 goal_m;
-  std::vector<Vec2> route_m;            // the taught route, start to goal
+  std::vector<Vec2> route_m;  // the taught route, start to goal
   double taught_route_length_m = 0.0;
-  Pose2 taught_goal_pose;               // true pose at the goal node's capture
+  Pose2 taught_goal_pose;  // true pose at the goal node's capture
   std::size_t goal_node = 0;
   std::size_t goal_cell = 0;
   std::size_t start_cell = 0;
   // Repeat.
   bool reached_goal_cell = false;
-  double goal_cell_distance_m = 0.0;   // true distance to the goal cell's true centre at arrival
-  Pose2 final_pose;                     // true pose at the end of the search
-  double final_error_x_m = 0.0;         // final_pose - taught_goal_pose, map (= world) frame
+  double goal_cell_distance_m = 0.0;  // true distance to the goal cell's true centre at arrival
+  Pose2 final_pose;                   // true pose at the end of the search
+  double final_error_x_m = 0.0;       // final_pose - taught_goal_pose, map (= world) frame
   double final_error_y_m = 0.0;
   double final_error_m = 0.0;
   double final_heading_error_rad = 0.0;
-  double navigation_path_m = 0.0;       // driven from the start until the goal cell was reached
-  double shortest_cell_path_m = 0.0;    // wavefront path over the learned cells, centre to centre
+  double navigation_path_m = 0.0;     // driven from the start until the goal cell was reached
+  double shortest_cell_path_m = 0.0;  // wavefront path over the learned cells, centre to centre
   double path_ratio = 0.0;
-  double odometry_error_at_goal_m = 0.0;   // |odometry - truth| at the end (uncorrected)
-  double estimate_error_at_goal_m = 0.0;   // |estimate - truth| at the end
+  double odometry_error_at_goal_m = 0.0;  // |odometry - truth| at the end (uncorrected)
+  double estimate_error_at_goal_m = 0.0;  // |estimate - truth| at the end
   // Drift correction: ATE (aligned, TUM evaluate_ate.py) of the pose-graph trajectory after the
   // last optimisation and of odometry alone, against the truth at the same stamps.
   double ate_corrected_m = 0.0;
   double ate_odometry_m = 0.0;
+  double ate_ratio = 0.0;  // odometry / corrected (eval/drift_correction.hpp); 0: none
   // Image-node search.
   int search_trials = 0;
   int search_successes = 0;
-  int search_captures = 0;              // confirmation captures, all searches
+  int search_captures = 0;  // confirmation captures, all searches
   struct Search {
     std::size_t node = 0;
     bool confirmed = false;
     int captures = 0;
-    std::string last_reason;            // the last confirmation's matcher reason
-    double offset_m = 0.0;              // the last confirming match's distance to the node pose
-    double true_offset_m = 0.0;         // the robot's true distance to the node's true pose
+    std::string last_reason;     // the last confirmation's matcher reason
+    double offset_m = 0.0;       // the last confirming match's distance to the node pose
+    double true_offset_m = 0.0;  // the robot's true distance to the node's true pose
   };
   std::vector<Search> searches;
   // The map.
@@ -146,7 +122,7 @@ struct TeachAndRepeatRun {
   std::size_t pose_nodes = 0;
   fusion::FusionStatistics slam;
   fusion::FusionStatistics slam_after_teach;  // the statistics when the teach stage ended
-  double duration_s = 0.0;              // simulated time, both stages
+  double duration_s = 0.0;                    // simulated time, both stages
   // Paths for pictures (map frame): estimates while teaching and repeating, and the truth.
   std::vector<Vec2> taught_path_m;
   std::vector<Vec2> repeated_path_m;
@@ -160,13 +136,87 @@ struct TeachAndRepeatResult {
   fusion::FusionSlam slam;
 };
 
-/// Runs the experiment once in `camera`'s world from `start` to `goal_m`. Input errors: invalid
-/// options, no route. Runtime errors: the teach route loses the map (no goal node could be
-/// captured), a drive that exceeds max_drive_s. `progress` (optional) gets a short text per stage.
-/// Deterministic for (camera, options, start, goal, seed).
+/// The experiment's stages, in order (Table 5.1).
+enum class TeachAndRepeatStage {
+  kTeachToGoal,       // steps 1-5: the operator drives the route to the goal
+  kCaptureGoalNode,   // step 6: into the firing field, look round, store the best view
+  kTeachBack,         // step 7: back to the start, facing the route again
+  kConfirmStartNode,  // step 8: image-node search in the start cell
+  kNavigate,          // step 8: wavefront + polyline + pure pursuit to the goal cell
+  kFindGoalNode,      // step 8: image-node search for the goal node; step 9: the figures
+  kDone,
+};
+
+/// What the stage does, for a progress line ("teach: driving to the goal").
+[[nodiscard]] const char* describe(TeachAndRepeatStage stage);
+
+class TeachAndRepeatSimulation;  // the simulated robot, camera and SLAM (internal)
+
+/// One run of the experiment as a step machine: step() runs the current stage to its end and
+/// moves to the next; the figures fill in as the stages end and are complete at kDone. The world
+/// comes from outside: `camera` (which holds it) renders the frames and must outlive the object.
+/// A stage is the unit of stepping; a mission driven by messages from another process (a real
+/// robot) needs steps of one control period, which this class does not offer yet (decision 0016).
+class TeachAndRepeat {
+ public:
+  /// Input errors: invalid options ("teach and repeat: ..."), no route from start to goal.
+  [[nodiscard]] static Result<TeachAndRepeat> create(const RgbdCamera& camera,
+                                                     const TeachAndRepeatOptions& options,
+                                                     const Pose2& start, Vec2 goal_m,
+                                                     std::uint64_t seed);
+  TeachAndRepeat(TeachAndRepeat&&) noexcept;
+  TeachAndRepeat& operator=(TeachAndRepeat&&) noexcept;
+  ~TeachAndRepeat();
+
+  /// Runs the current stage. Runtime errors: no view at the goal makes an image node, the
+  /// wavefront finds no path, a drive exceeds max_drive_s; the object is then finished (kDone)
+  /// with the figures it had. Precondition: !done().
+  Status step();
+
+  [[nodiscard]] bool done() const { return stage_ == TeachAndRepeatStage::kDone; }
+  [[nodiscard]] TeachAndRepeatStage stage() const { return stage_; }
+  /// The figures so far (complete once done()).
+  [[nodiscard]] const TeachAndRepeatRun& run() const { return run_; }
+  [[nodiscard]] const fusion::FusionSlam& slam() const;
+  /// The run and the SLAM, leaving the object empty. Precondition: done().
+  [[nodiscard]] TeachAndRepeatResult take_result() &&;
+
+ private:
+  TeachAndRepeat(const RgbdCamera& camera, const TeachAndRepeatOptions& options,
+                 std::vector<Vec2> route, const Pose2& start, Vec2 goal_m, std::uint64_t seed);
+  Status teach_to_goal();
+  Status capture_goal_node();
+  Status teach_back();
+  Status confirm_start_node();
+  Status navigate();
+  Status find_goal_node();
+  Status search(std::size_t node_id);
+  void finish();
+
+  TeachAndRepeatOptions options_;
+  std::unique_ptr<TeachAndRepeatSimulation> sim_;
+  TeachAndRepeatRun run_;
+  TeachAndRepeatStage stage_ = TeachAndRepeatStage::kTeachToGoal;
+};
+
+/// Runs the experiment once in `camera`'s world from `start` to `goal_m`: TeachAndRepeat stepped to
+/// the end. Errors: TeachAndRepeat's. `progress` (optional) gets describe(stage) before each
+/// stage. Deterministic for (camera, options, start, goal, seed).
 [[nodiscard]] Result<TeachAndRepeatResult> run_teach_and_repeat(
-    const RgbdCamera& camera, const TeachAndRepeatOptions& options, const Pose2& start,
-    Vec2 goal_m, std::uint64_t seed,
-    const std::function<void(const std::string&)>& progress = {});
+    const RgbdCamera& camera, const TeachAndRepeatOptions& options, const Pose2& start, Vec2 goal_m,
+    std::uint64_t seed, const std::function<void(const std::string&)>& progress = {});
+
+/// Several runs at a glance: how many reached the goal cell, the worst final error, path ratio
+/// and ATE ratio, and the image-node searches.
+struct TeachAndRepeatSummary {
+  int runs = 0;
+  int reached_goal_cell = 0;
+  double max_final_error_m = 0.0;
+  double max_path_ratio = 0.0;
+  double min_ate_ratio = 0.0;  // 1e300 when there are no runs
+  int search_trials = 0;
+  int search_successes = 0;
+};
+[[nodiscard]] TeachAndRepeatSummary summarize(const std::vector<TeachAndRepeatRun>& runs);
 
 }  // namespace tessera

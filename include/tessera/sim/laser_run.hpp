@@ -6,6 +6,7 @@
 // (sensors/odometry_model.hpp). Beside the log it returns the true pose at every scan, so a SLAM
 // run on the log can be scored (ATE) and its map compared with the world.
 #include <cstdint>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -89,5 +90,33 @@ struct SimulatedLaserRun {
 [[nodiscard]] Result<SimulatedLaserRun> simulate_laser_run(const World& world,
                                                            const LaserRunOptions& options,
                                                            std::uint64_t seed);
+
+class LaserRunState;  // the drive, the noise streams and the poses (internal)
+
+/// The same run as a step machine: create() plans the tour and records the first scan at the
+/// start; each step() drives one scan period and records the next scan, until done() (the tour is
+/// driven, or the next scan would pass max_duration_s, or max_path_length_m is driven). The world
+/// is outside: it must outlive the object. simulate_laser_run is create() and step() to the end.
+class LaserRun {
+ public:
+  /// Errors: those of simulate_laser_run.
+  [[nodiscard]] static Result<LaserRun> create(const World& world, const LaserRunOptions& options,
+                                               std::uint64_t seed);
+  LaserRun(LaserRun&&) noexcept;
+  LaserRun& operator=(LaserRun&&) noexcept;
+  ~LaserRun();
+
+  [[nodiscard]] bool done() const;
+  /// Drives one scan period and records its scan. Precondition: !done().
+  void step();
+  /// The log, truth and tour so far (tour_completed is set once done()).
+  [[nodiscard]] const SimulatedLaserRun& run() const;
+  /// The run, leaving the object empty.
+  [[nodiscard]] SimulatedLaserRun take_run() &&;
+
+ private:
+  explicit LaserRun(std::unique_ptr<LaserRunState> state);
+  std::unique_ptr<LaserRunState> state_;
+};
 
 }  // namespace tessera

@@ -8,12 +8,12 @@
 //     "Distance Transforms of Sampled Functions", Theory of Computing 8).
 //  2. Waypoints: one per block of a coarse lattice (waypoint_spacing_m), the cell of the start's
 //     component nearest the block's centre.
-//  3. Order: greedy nearest unvisited waypoint by path length (Dijkstra over the room cells,
-//     8-connected, no corner cutting); a waypoint the path passes within half a spacing of counts
+//  3. Order: greedy nearest unvisited waypoint by path length (nav/route_planner.hpp's Dijkstra
+//     over the room cells, 8-connected, no corner cutting); a waypoint the path passes within half a spacing of counts
 //     as visited. Leaving a dead end retraces its corridor, and the tour ends back at the start, so
 //     places are revisited.
-//  4. Smoothing: the grid path is shortened by string pulling (a vertex is dropped while the
-//     straight segment stays in room cells), then each corner is rounded with a circular arc
+//  4. Smoothing: the grid path is shortened by nav/route_planner.hpp's string pulling (a vertex is
+//     dropped while the straight segment stays in room cells, checked exactly), then each corner is rounded with a circular arc
 //     tangent to both segments (at most max_turn_radius_m, shrunk until the arc stays in room
 //     cells); a corner too sharp for an arc is a turn in place.
 // The result is lines, arcs and turns in place: a route a differential drive follows exactly.

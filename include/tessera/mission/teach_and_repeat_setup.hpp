@@ -1,0 +1,70 @@
+#pragma once
+// The scenario of the teach-and-repeat experiment (mission/teach_and_repeat.hpp) and of the fusion
+// mapping run in a simulated world: the taught route, the start and goal, and the posters on the
+// walls. The route is nav/route_planner.hpp's, over sim/tour.hpp's room for the robot.
+// Deterministic for a seed. No I/O.
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "tessera/core/pose2.hpp"
+#include "tessera/core/result.hpp"
+#include "tessera/core/rng.hpp"
+#include "tessera/core/vec2.hpp"
+#include "tessera/sim/poster.hpp"
+#include "tessera/sim/wall_faces.hpp"
+#include "tessera/sim/world.hpp"
+
+namespace tessera {
+
+/// A drivable route in `world` from `from_m` to `to_m`: nav/route_planner.hpp's plan_mask_route
+/// over the cells at least clearance_m from every wall (sim/tour.hpp room_for_robot), so every leg
+/// keeps clearance_m (exact segment checks). Starts with from_m and ends with to_m. Input error
+/// when either end has no room or they are not connected. Cost: one Dijkstra search over the grid.
+[[nodiscard]] Result<std::vector<Vec2>> plan_route(const World& world, Vec2 from_m, Vec2 to_m,
+                                                   double clearance_m);
+
+/// A start and goal for the experiment: the start a random room cell of the largest component, the
+/// goal the room cell whose route length from the start is nearest route_length_m (the thesis'
+/// route: about 7.4 m + 2.3 m). The start heading faces the route's first leg.
+struct StartAndGoal {
+  Pose2 start;
+  Vec2 goal_m;
+  double route_length_m = 0.0;
+};
+[[nodiscard]] Result<StartAndGoal> choose_start_and_goal(const World& world, double clearance_m,
+                                                         double route_length_m, Rng& rng);
+
+/// Posters for the experiment's world: `layers` passes of sim/poster.hpp's place_posters (seeds
+/// seed, seed + 1, ...), a poster of a later pass kept only where it does not overlap (with
+/// margin_m) one already on its face. One pass hangs at most one poster per wall face, which leaves
+/// long walls mostly blank; the thesis' robot drove past desks and cabinets. Deterministic.
+[[nodiscard]] std::vector<Poster> place_poster_layers(const std::vector<WallFace>& faces,
+                                                      const std::vector<WallTexture>& textures,
+                                                      const PosterPlacementOptions& options,
+                                                      std::uint64_t seed, int layers);
+
+/// The experiment's world as `tessera fusion --world / --teach-and-repeat` sets it up: posters
+/// placed by the seed (three layers, probability 0.9 per face) and one start and goal for every
+/// run (the thesis repeated one route); runs then differ only in their own seed.
+struct TeachAndRepeatScenario {
+  std::vector<Poster> posters;
+  Pose2 start;
+  Vec2 goal_m;
+};
+
+/// Places the posters and takes the start and goal: the given ones (start heading along the
+/// route's first leg) or, when both are empty, choose_start_and_goal with Rng(seed). Usage error
+/// when only one of start and goal is given; input errors of plan_route and choose_start_and_goal.
+[[nodiscard]] Result<TeachAndRepeatScenario> set_up_teach_and_repeat(
+    const World& world, const std::vector<WallTexture>& textures, std::optional<Vec2> start_m,
+    std::optional<Vec2> goal_m, double clearance_m, double route_length_m, std::uint64_t seed);
+
+/// The fusion mapping run's waypoints (tessera fusion --world, decision 0010): plan_route from the
+/// start to the goal and back, without the start itself (sim/rgbd_run.hpp's RgbdRunOptions
+/// waypoints_m, driven with tour.clearance_m = clearance_m: every leg keeps it). Input error when
+/// no route joins them.
+[[nodiscard]] Result<std::vector<Vec2>> there_and_back_waypoints(const World& world, Vec2 start_m,
+                                                                 Vec2 goal_m, double clearance_m);
+
+}  // namespace tessera

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@
 #include "tessera/report/bob_report.hpp"
 #include "tessera/io/image_file.hpp"
 #include "tessera/io/json_file.hpp"
+#include "tessera/eval/bob_table.hpp"
 #include "tessera/mission/bob_mission.hpp"
 
 namespace tessera::cli {
@@ -153,8 +155,6 @@ int BobCommand::run() const {
   if (!loaded) return report_error(loaded.error());
   const World cropped = std::move(loaded).value();
   const std::string world_name = world_.file ? world_.file->string() : "builtin:" + world_.builtin;
-  // The robot's grid, as run_bob lays it over the world.
-  const GridGeometry cells = cropped.resampled(cell_m_).geometry();
   // With --crop the grid covers the rectangle and the sensors see the whole floor plan around it
   // (BobMissionOptions::grid_rect_m): an open configuration has no wall on the grid's edge.
   World whole;
@@ -179,10 +179,14 @@ int BobCommand::run() const {
     options.grid_rect_m = std::array<Vec2, 2>{
         c.origin(), c.origin() + Vec2{c.width() * c.resolution_m(), c.height() * c.resolution_m()}};
   }
+  // The robot's grid and its ground truth, made once for the run(s) and the scoring.
+  Result<World> grid_truth = bob_grid_truth(world, options);
+  if (!grid_truth) return report_error(grid_truth.error());
+  const World& truth = *grid_truth;
   if (start_) {
     Result<Vec2> p = parse_point(*start_, "--start");
     if (!p) return report_error(p.error());
-    options.start = cells.cell_at_unchecked(*p);
+    options.start = truth.geometry().cell_at_unchecked(*p);
   }
 
   // --monitor-dir: a picture of the robot's map and route after every step (BOBMapping Figure 5a's
@@ -227,12 +231,13 @@ int BobCommand::run() const {
           " variant with re-sensing " + (fw.resense ? "on" : "off") + "; pass the same --variant "
           "and --resense"));
     }
-    firmware_result = run_bob(world, options, **link);
+    firmware_result = run_bob(world, truth, options, **link);
     emulator.stop();
     if (!*firmware_result) return report_error(firmware_result->error());
     options.on_step = nullptr;  // the monitor shows the firmware's run
   }
-  Result<BobResult> result = run_bob(world, options);
+  const std::unique_ptr<BobExplorerPort> host_explorer = local_bob_explorer();
+  Result<BobResult> result = run_bob(world, truth, options, *host_explorer);
   if (!monitor_status) return report_error(monitor_status.error());
   if (!result) {
     Error e = result.error();
@@ -251,6 +256,10 @@ int BobCommand::run() const {
     }
   }
   const BobResult& r = firmware_result ? **firmware_result : *result;
+  const BobTableRow row = score_bob_table(
+      {r.sensed, r.occupied, r.route, r.moves, r.turns, r.resensed, r.ignored_readings},
+      TruthGrid(world.geometry(), world.solid_cells()),
+      TruthGrid(truth.geometry(), truth.solid_cells()), options.boundary_tolerance_m);
 
   BobMapFile map_file;
   map_file.width = r.width;
@@ -276,7 +285,7 @@ int BobCommand::run() const {
   context.world_file = world_name;
   context.world_resolution_m = world.geometry().resolution_m();
   context.variant = variant_;
-  nlohmann::json report = bob_report(r, context);
+  nlohmann::json report = bob_report(r, row, context);
   if (firmware_) {
     report["firmware"] = {{"elf", firmware_->string()},
                           {"board", "mps2-an386 (QEMU)"},
@@ -291,7 +300,7 @@ int BobCommand::run() const {
   if (Status s = write_files_atomic(files); !s) return report_error(s.error());
 
   if (!quiet_) {
-    const BobTableRow& t = r.row;
+    const BobTableRow& t = row;
     fmt::print(
         "bob: {} x {} cells, {} ({}), path {} cells, {} turns, re-sensed {}, "
         "empty-as-occupied {}, occupied-as-empty {}, success {:.2f}%\n",

@@ -74,8 +74,6 @@ int ExploreCommand::run() const {
   options.lidar.max_range_m = lidar_range_m_;
   options.lidar.beams = lidar_beams_;
   options.lidar.range_noise_stddev_m = range_noise_m_;
-  // Noise is truncated at 3 sigma in the simulator; a margin just above it keeps every wall cell.
-  options.scan_insert.free_margin_m = 3.0 * range_noise_m_ + 1e-4;
   options.low = low_;
   options.seed = seed_;
   options.max_steps = max_steps_;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "tessera/bob/final_map.hpp"
 #include "tessera/bob/packed_map.hpp"
 #include "tessera/core/angle.hpp"
+#include "tessera/core/assert.hpp"
 
 namespace tessera {
 namespace {
@@ -121,22 +123,6 @@ double free_travel(const World& world, const Pose2& T, double distance_m, double
   return distance_m;
 }
 
-/// The robot's grid over `world` (or over options.grid_rect_m of it) and the ground truth of each
-/// of its cells: occupied when any solid cell of `world` overlaps it (World::resampled's rule; a
-/// cell reaching past the rectangle looks at the world there, not at the rectangle's edge).
-World robot_grid_truth(const World& world, const BobMissionOptions& options) {
-  if (!options.grid_rect_m) return world.resampled(options.cell_m);
-  const World rect = world.cropped((*options.grid_rect_m)[0], (*options.grid_rect_m)[1]);
-  const GridGeometry g = rect.resampled(options.cell_m).geometry();
-  std::vector<std::uint8_t> solid(g.size(), 0);
-  const Vec2 half{0.5 * options.cell_m, 0.5 * options.cell_m};
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    const Vec2 centre = g.center_of(g.cell_of(i));
-    solid[i] = world.any_solid_in(centre - half, centre + half) ? 1 : 0;
-  }
-  return World(g, std::move(solid), world.name());
-}
-
 BeaconOptions default_beacons(const GridGeometry& g) {
   constexpr double kInsetM = 0.2;
   constexpr double kCeilingM = 2.5;
@@ -190,46 +176,44 @@ class LocalExplorerPort final : public BobExplorerPort {
   bob::Explorer explorer_;
 };
 
-}  // namespace
 
-const char* bob_variant_name(BobVariant v) {
-  return v == BobVariant::kTrail ? "trail" : "map-aware";
-}
-
-Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) {
-  LocalExplorerPort port;
-  return run_bob(world, options, port);
-}
-
-Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
-                          BobExplorerPort& explorer) {
-  if (!(options.cell_m > 0.0)) return usage_error("cell_m: must be > 0");
+/// The sensing and body options a run derives from BobMissionOptions (noise off: exact readings,
+/// motion and fixes, no encoder quantisation either).
+struct BobSetup {
   BobSensingOptions sensing;
-  sensing.layout.cell_m = options.cell_m;
-  sensing.layout.robot_length_m = options.robot_length_m;
-  sensing.layout.robot_width_m = options.robot_width_m;
-  sensing.samples_per_move = options.samples_per_move;
-  sensing.edge_tolerance_m = options.boundary_tolerance_m;
-  internal::BobBodyOptions body_options;
-  // Noise off: exact readings, motion and fixes (no encoder quantisation either).
-  body_options.perfect = options.perfect_localisation || !options.noise;
-  body_options.encoders = options.encoders;
-  body_options.slip_detection_m = options.reposition_threshold_m;
+  internal::BobBodyOptions body;
+};
+
+BobSetup bob_setup(const BobMissionOptions& options, const GridGeometry& g) {
+  BobSetup s;
+  s.sensing.layout.cell_m = options.cell_m;
+  s.sensing.layout.robot_length_m = options.robot_length_m;
+  s.sensing.layout.robot_width_m = options.robot_width_m;
+  s.sensing.samples_per_move = options.samples_per_move;
+  s.sensing.edge_tolerance_m = options.boundary_tolerance_m;
+  s.body.perfect = options.perfect_localisation || !options.noise;
+  s.body.encoders = options.encoders;
+  s.body.slip_detection_m = options.reposition_threshold_m;
+  s.body.beacons = options.beacons ? *options.beacons : default_beacons(g);
   if (!options.noise) {
-    body_options.slip_probability = 0.0;
-    sensing.lateral = without_noise(sensing.lateral);
-    sensing.front = without_noise(sensing.front);
-    body_options.encoders.scale_error_stddev = 0.0;
-    body_options.encoders.tick_noise_stddev = 0.0;
+    s.body.slip_probability = 0.0;
+    s.sensing.lateral = without_noise(s.sensing.lateral);
+    s.sensing.front = without_noise(s.sensing.front);
+    s.body.encoders.scale_error_stddev = 0.0;
+    s.body.encoders.tick_noise_stddev = 0.0;
+    s.body.beacons.range_noise_stddev_m = 0.0;
+    s.body.fix_stddev_m = 0.0;
   }
-  if (validate(sensing.layout)) {
+  return s;
+}
+
+/// Errors of BobMission::create that the options and the grid alone decide.
+Status check_setup(const BobMissionOptions& options, const GridGeometry& g, const BobSetup& s) {
+  if (validate(s.sensing.layout)) {
     return input_error("cell " + metres_text(options.cell_m) + " m does not fit the robot (" +
                        metres_text(options.robot_length_m) + " x " +
                        metres_text(options.robot_width_m) + " m)");
   }
-  // The robot's grid and the ground truth of each of its cells.
-  const World truth = robot_grid_truth(world, options);
-  const GridGeometry& g = truth.geometry();
   const long long n_cells = static_cast<long long>(g.width()) * g.height();
   if (n_cells > kMaxBobCells) {
     return input_error("world is " + std::to_string(g.width()) + " x " +
@@ -238,296 +222,387 @@ Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
                        std::to_string(kMaxBobCells) + ")");
   }
   if (n_cells < 1) return input_error("world has no cells");
-  body_options.beacons = options.beacons ? *options.beacons : default_beacons(g);
-  if (!options.noise) {
-    body_options.beacons.range_noise_stddev_m = 0.0;
-    body_options.fix_stddev_m = 0.0;
-  }
-  if (auto problem = validate(sensing)) return usage_error(*problem);
-  if (auto problem = validate(body_options.encoders)) return usage_error("encoders." + *problem);
-  if (auto problem = validate(body_options.beacons)) return usage_error("beacons." + *problem);
+  if (auto problem = validate(s.sensing)) return usage_error(*problem);
+  if (auto problem = validate(s.body.encoders)) return usage_error("encoders." + *problem);
+  if (auto problem = validate(s.body.beacons)) return usage_error("beacons." + *problem);
   if (options.max_step_attempts < 1) return usage_error("max_step_attempts: must be >= 1");
+  return Ok{};
+}
 
-  std::vector<Cell> candidates;
-  if (options.start) {
-    const Cell start = *options.start;
-    if (!g.contains(start)) return input_error("start " + to_string(start) + " is outside the map");
-    if (truth.solid(start)) {
-      return input_error("start " + to_string(start) + " is inside an obstacle");
-    }
-    if (truth.solid(start + kNeighbors4[0])) {
-      return input_error("start " + to_string(start) +
-                         ": the cell in front must be free (BOBMapping 3.4)");
-    }
-    candidates.push_back(start);
-  } else {
-    candidates = start_candidates(truth);
+/// options.start, checked, or the default candidates in order of preference.
+Result<std::vector<Cell>> bob_start_cells(const World& truth, const BobMissionOptions& options) {
+  const GridGeometry& g = truth.geometry();
+  if (!options.start) {
+    std::vector<Cell> candidates = start_candidates(truth);
     if (candidates.empty()) {
       return input_error("no free cell with a free cell in front (North) to start from");
     }
+    return candidates;
   }
+  const Cell start = *options.start;
+  if (!g.contains(start)) return input_error("start " + to_string(start) + " is outside the map");
+  if (truth.solid(start)) return input_error("start " + to_string(start) + " is inside an obstacle");
+  if (truth.solid(start + kNeighbors4[0])) {
+    return input_error("start " + to_string(start) +
+                       ": the cell in front must be free (BOBMapping 3.4)");
+  }
+  return std::vector<Cell>{start};
+}
 
+/// Status of an explorer call that must be kOk.
+Status expect_ok(const Result<bob::Status>& s, const char* what) {
+  if (!s) return s.error();
+  if (*s != bob::Status::kOk) return runtime_error(std::string(what) + bob::status_name(*s));
+  return Ok{};
+}
+
+/// The grid's cells as the user gets them: sensed, and occupied in the final map (decision 0008).
+/// A map of the wrong size (a snapshot a link has not filled yet) leaves its cells 0.
+void fill_cells(const BobExplorerSummary& sum, const GridGeometry& g, BobResult& out) {
+  out.sensed.assign(g.size(), 0);
+  out.occupied.assign(g.size(), 0);
+  std::vector<std::uint8_t> bytes(bob::PackedMap::bytes_needed(g.width(), g.height()));
+  bob::PackedMap map;
+  if (map.init(bytes.data(), bytes.size(), g.width(), g.height()) == bob::Status::kOk &&
+      sum.packed_map.size() == bytes.size()) {
+    std::copy(sum.packed_map.begin(), sum.packed_map.end(), bytes.begin());
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      out.sensed[i] = map.state(to_grid(g.cell_of(i))) != bob::CellState::kUnsensed ? 1 : 0;
+    }
+  }
+  std::vector<std::uint8_t> final_bytes(bob::FinalMap::bytes_needed(g.width(), g.height()));
+  bob::FinalMap final_map;
+  if (final_map.init(final_bytes.data(), final_bytes.size(), g.width(), g.height()) ==
+          bob::Status::kOk &&
+      sum.final_map.size() == final_bytes.size()) {
+    std::copy(sum.final_map.begin(), sum.final_map.end(), final_bytes.begin());
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      out.occupied[i] = final_map.occupied(to_grid(g.cell_of(i))) ? 1 : 0;
+    }
+  }
+}
+
+/// kRuntime unless the explorer's maps have the grid's sizes.
+Status check_map_sizes(const BobExplorerSummary& sum, const GridGeometry& g) {
+  const std::size_t packed = bob::PackedMap::bytes_needed(g.width(), g.height());
+  const std::size_t final_bytes = bob::FinalMap::bytes_needed(g.width(), g.height());
+  if (sum.packed_map.size() == packed && sum.final_map.size() == final_bytes) return Ok{};
+  return runtime_error("explorer: the maps it returned are " +
+                       std::to_string(sum.packed_map.size()) + " and " +
+                       std::to_string(sum.final_map.size()) + " bytes, expected " +
+                       std::to_string(packed) + " and " + std::to_string(final_bytes));
+}
+
+}  // namespace
+
+const char* bob_variant_name(BobVariant v) {
+  return v == BobVariant::kTrail ? "trail" : "map-aware";
+}
+
+Result<World> bob_grid_truth(const World& world, const BobMissionOptions& options) {
+  if (!(options.cell_m > 0.0)) return usage_error("cell_m: must be > 0");
+  if (!options.grid_rect_m) return world.resampled(options.cell_m);
+  const World rect = world.cropped((*options.grid_rect_m)[0], (*options.grid_rect_m)[1]);
+  const GridGeometry g = rect.resampled(options.cell_m).geometry();
+  std::vector<std::uint8_t> solid(g.size(), 0);
+  const Vec2 half{0.5 * options.cell_m, 0.5 * options.cell_m};
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const Vec2 centre = g.center_of(g.cell_of(i));
+    solid[i] = world.any_solid_in(centre - half, centre + half) ? 1 : 0;
+  }
+  return World(g, std::move(solid), world.name());
+}
+
+std::unique_ptr<BobExplorerPort> local_bob_explorer() {
+  return std::make_unique<LocalExplorerPort>();
+}
+
+struct BobMission::State {
+  const World* world = nullptr;
+  const World* truth = nullptr;
+  BobMissionOptions options;
+  BobExplorerPort* explorer = nullptr;
+  BobSetup setup;
+  GridGeometry g;
+  Rng rng{1};
+  std::optional<internal::BobBody> body;
+  std::vector<Cell> route;
+  Cell start;
+  Cell pos;
+  bob::Direction heading = bob::Direction::kNorth;
+  BobLocalisationStats loc;
+  double fix_error_sum_m = 0.0;
+  int linear_since_fix = 0;
+  long long moves = 0;  // step() calls that asked the explorer
+  long long max_moves = 0;
+  Cell last_bumped{-1, -1};
+  int bumps_in_a_row = 0;
+  bool finished = false;
+
+  Status place(const std::vector<Cell>& candidates);
+  bool take_fix();
+  void back_to(Vec2 cell_m);
+  bool drive(Cell next, bool after_turn, StepSensing& seen);
+  Status bumped(Cell next);
+  Status entered(Cell next, const StepSensing& seen);
+};
+
+/// Placed by hand in a start cell facing North, the robot senses the three cells around it as if
+/// it had just driven in from behind. Section 3.4 needs the front cell free: when the sensors read
+/// it occupied (a wall just beyond it can mark it, errors falling on the safe side), a default
+/// start moves on to the next candidate; a given start is refused.
+Status BobMission::State::place(const std::vector<Cell>& candidates) {
   const bob::Backtrack backtrack = options.variant == BobVariant::kTrail
                                        ? bob::Backtrack::kTrail
                                        : bob::Backtrack::kShortestKnownPath;
-  Rng rng(options.seed);
-  // Placed by hand in a start cell facing North, the robot senses the three cells around it as if
-  // it had just driven in from behind. Section 3.4 needs the front cell free: when the sensors
-  // read it occupied (a wall just beyond it can mark it, errors falling on the safe side), a
-  // default start moves on to the next candidate; a given start is refused.
-  Cell start{};
   bob::Status started = bob::Status::kFrontBlocked;
   for (std::size_t k = 0; k < candidates.size() && started != bob::Status::kOk; ++k) {
     start = candidates[k];
     const Result<bob::Status> s =
-        explorer.begin(bob::ExplorerOptions{backtrack, options.resense}, g.width(), g.height());
-    if (!s) return s.error();
-    if (*s != bob::Status::kOk) {
-      return runtime_error(std::string("explorer init: ") + bob::status_name(*s));
-    }
+        explorer->begin(bob::ExplorerOptions{backtrack, options.resense}, g.width(), g.height());
+    if (Status ok = expect_ok(s, "explorer init: "); !ok) return ok;
     const Cell behind = start - kNeighbors4[0];
-    const Result<bob::Status> r = explorer.report(sense_cells_while_moving(
-        with_free_cell(world, g, behind), g, centred_pose(g, behind, 0), sensing, rng));
+    const Result<bob::Status> r = explorer->report(sense_cells_while_moving(
+        with_free_cell(*world, g, behind), g, centred_pose(g, behind, 0), setup.sensing, rng));
     if (!r) return r.error();
-    const Result<bob::Status> st = explorer.start(start);
+    const Result<bob::Status> st = explorer->start(start);
     if (!st) return st.error();
     started = *st;
   }
-  if (started != bob::Status::kOk) {
-    if (options.start) {
-      return input_error("start " + to_string(start) +
-                         ": the cell in front must be free (BOBMapping 3.4), sensed " +
-                         bob::status_name(started));
-    }
-    return input_error("no start cell whose front cell the sensors read free (BOBMapping 3.4)");
+  if (started == bob::Status::kOk) return Ok{};
+  if (options.start) {
+    return input_error("start " + to_string(start) +
+                       ": the cell in front must be free (BOBMapping 3.4), sensed " +
+                       bob::status_name(started));
   }
+  return input_error("no start cell whose front cell the sensors read free (BOBMapping 3.4)");
+}
 
-  BobResult out;
-  out.start = start;
-  out.width = g.width();
-  out.height = g.height();
-  out.route.push_back(start);
-  // The monitor's view of the run so far (BobMissionOptions::on_step).
-  const auto notify = [&]() -> Status {
-    if (!options.on_step) return Ok{};
-    Result<BobExplorerSummary> now = explorer.snapshot();
-    if (!now) return now.error();
-    BobResult view;
-    view.start = out.start;
-    view.width = out.width;
-    view.height = out.height;
-    view.route = out.route;
-    view.final_map = now->final_map;
-    view.sensed.assign(g.size(), 0);
-    std::vector<std::uint8_t> bytes(bob::PackedMap::bytes_needed(g.width(), g.height()));
-    bob::PackedMap map;
-    if (map.init(bytes.data(), bytes.size(), g.width(), g.height()) == bob::Status::kOk &&
-        now->packed_map.size() == bytes.size()) {
-      std::copy(now->packed_map.begin(), now->packed_map.end(), bytes.begin());
-      for (std::size_t i = 0; i < g.size(); ++i) {
-        view.sensed[i] = map.state(to_grid(g.cell_of(i))) != bob::CellState::kUnsensed ? 1 : 0;
-      }
-    }
-    options.on_step(view);
-    return Ok{};
-  };
-  if (Status s = notify(); !s) return s.error();
+/// A beacon fix; false when it disagrees with odometry by more than the threshold.
+bool BobMission::State::take_fix() {
+  const Vec2 true_m = body->truth().translation();
+  loc.max_drift_m = std::max(loc.max_drift_m, (body->belief().translation() - true_m).norm());
+  const std::optional<double> disagreement_m = body->fix(rng);
+  if (!disagreement_m) {
+    ++loc.failed_fixes;
+    return true;
+  }
+  ++loc.fixes;
+  fix_error_sum_m += (body->belief().translation() - true_m).norm();
+  return *disagreement_m <= options.reposition_threshold_m;
+}
 
-  internal::BobBody body(body_options, centred_pose(g, start, 0), rng);
-  BobLocalisationStats& loc = out.localisation;
-  double fix_error_sum_m = 0.0;
-  int linear_since_fix = 0;
-  const long long max_moves = kSafetyMovesPerCell * n_cells;
-  Cell pos = start;
-  bob::Direction heading = bob::Direction::kNorth;
-  // Backwards to the believed centre of `cell_m`: turn so that the back faces it, reverse.
-  const auto back_to = [&](Vec2 cell_m) {
-    const Vec2 here_m = body.belief().translation();
-    body.face(here_m + (here_m - cell_m), rng);
-    body.drive(-(cell_m - here_m).norm(), rng);
-  };
-  // A beacon fix; false when it disagrees with odometry by more than the threshold.
-  const auto take_fix = [&]() {
-    const Vec2 true_m = body.truth().translation();
-    loc.max_drift_m = std::max(loc.max_drift_m, (body.belief().translation() - true_m).norm());
-    const std::optional<double> disagreement_m = body.fix(rng);
-    if (!disagreement_m) {
-      ++loc.failed_fixes;
+/// Backwards to the believed centre of `cell_m`: turn so that the back faces it, reverse.
+void BobMission::State::back_to(Vec2 cell_m) {
+  const Vec2 here_m = body->belief().translation();
+  body->face(here_m + (here_m - cell_m), rng);
+  body->drive(-(cell_m - here_m).norm(), rng);
+}
+
+/// Drives from pos to the centre of `next`; true when the body met an obstacle on the way (it
+/// stopped there). BOBMapping 3.3: "after two linear movements or after the linear movement
+/// following a rotation" a fix; 3.4: on disagreement, back to the previous cell's centre and
+/// repeat the step, sensing again (the readings of the rejected step are discarded).
+bool BobMission::State::drive(Cell next, bool after_turn, StepSensing& seen) {
+  const Vec2 from_m = g.center_of(pos);
+  const Vec2 to_m = g.center_of(next);
+  for (int attempt = 1;; ++attempt) {
+    body->face(to_m, rng);
+    const Pose2 true_start = body->truth();
+    const Pose2 believed_start = body->belief();
+    const double command_m = (to_m - believed_start.translation()).norm();
+    // The motors stall where the body meets an obstacle (explorer.hpp, blocked()).
+    const double free_m =
+        free_travel(*world, true_start, command_m, options.robot_length_m, options.robot_width_m);
+    // A cell the robot has stood in stays free (3.4), so the explorer asks for the same move
+    // again; after kMaxBumps tries the robot squeezes through (a collision, counted).
+    const bool squeeze = next == last_bumped && bumps_in_a_row >= kMaxBumps;
+    if (free_m < command_m && squeeze) ++loc.collisions;
+    if (free_m < command_m && !squeeze) {
+      body->drive(free_m, rng);
       return true;
     }
-    ++loc.fixes;
-    fix_error_sum_m += (body.belief().translation() - true_m).norm();
-    return *disagreement_m <= options.reposition_threshold_m;
-  };
-  Cell last_bumped{-1, -1};
-  int bumps_in_a_row = 0;
-  for (long long moves = 0;; ++moves) {
-    if (moves > max_moves) {
-      return runtime_error("the explorer did not stop within " + std::to_string(max_moves) +
-                           " moves");
+    body->drive(command_m, rng);
+    // The uncertainty at the end of the move bounds it over the move.
+    const PoseUncertainty uncertainty{body->position_stddev_m(), body->heading_stddev_rad()};
+    seen = sense_cells_while_moving(*world, g, true_start, believed_start, setup.sensing, rng,
+                                    uncertainty);
+    ++linear_since_fix;
+    if (options.perfect_localisation || (!after_turn && linear_since_fix < 2)) return false;
+    linear_since_fix = 0;
+    if (take_fix()) return false;
+    if (attempt == options.max_step_attempts) {
+      ++loc.unresolved_steps;
+      return false;
     }
-    bob::Direction d{};
-    const Result<bob::Status> s = explorer.next_move(d);
-    if (!s) return s.error();
-    if (*s == bob::Status::kFinished) break;
-    if (*s != bob::Status::kOk) {
-      return runtime_error(std::string("explorer: ") + bob::status_name(*s));
-    }
-    const Cell next = pos + kNeighbors4[static_cast<std::size_t>(static_cast<int>(d))];
-    const Vec2 from_m = g.center_of(pos);
-    const Vec2 to_m = g.center_of(next);
-    // BOBMapping 3.3: "after two linear movements or after the linear movement following a
-    // rotation" a fix; 3.4: on disagreement, back to the previous cell's centre and repeat.
-    bool after_turn = d != heading;
-    heading = d;
-    StepSensing step;
-    bool bumped = false;
-    for (int attempt = 1;; ++attempt) {
-      body.face(to_m, rng);
-      const Pose2 true_start = body.truth();
-      const Pose2 believed_start = body.belief();
-      const double command_m = (to_m - believed_start.translation()).norm();
-      // The motors stall where the body meets an obstacle (explorer.hpp, blocked()).
-      const double free_m =
-          free_travel(world, true_start, command_m, options.robot_length_m, options.robot_width_m);
-      // A cell the robot has stood in stays free (3.4), so the explorer asks for the same move
-      // again; after kMaxBumps tries the robot squeezes through (a collision, counted).
-      const bool squeeze = next == last_bumped && bumps_in_a_row >= kMaxBumps;
-      if (free_m < command_m && squeeze) ++loc.collisions;
-      if (free_m < command_m && !squeeze) {
-        body.drive(free_m, rng);
-        bumped = true;
-        break;
-      }
-      body.drive(command_m, rng);
-      // The uncertainty at the end of the move bounds it over the move.
-      const PoseUncertainty uncertainty{body.position_stddev_m(), body.heading_stddev_rad()};
-      step =
-          sense_cells_while_moving(world, g, true_start, believed_start, sensing, rng, uncertainty);
-      ++linear_since_fix;
-      if (options.perfect_localisation || (!after_turn && linear_since_fix < 2)) break;
-      linear_since_fix = 0;
-      if (take_fix()) break;
-      if (attempt == options.max_step_attempts) {
-        ++loc.unresolved_steps;
-        break;
-      }
-      ++loc.repositionings;
-      back_to(from_m);
-      after_turn = true;  // the repeated step ends with a fix
-    }
-    if (bumped) {
-      // Back to where it came from, the cell it could not enter marked occupied; a fix there.
-      ++loc.bumps;
-      bumps_in_a_row = next == last_bumped ? bumps_in_a_row + 1 : 1;
-      last_bumped = next;
-      back_to(from_m);
-      const Result<bob::Status> b = explorer.blocked();
-      if (!b) return b.error();
-      if (*b != bob::Status::kOk) {
-        return runtime_error(std::string("explorer: ") + bob::status_name(*b));
-      }
-      if (Status n = notify(); !n) return n.error();
-      if (!options.perfect_localisation) {
-        linear_since_fix = 0;
-        (void)take_fix();
-      }
-      continue;
-    }
-    bumps_in_a_row = 0;
-    if (const Result<bob::Status> r = explorer.report(step); !r) return r.error();
-    const Pose2& t = body.truth();
-    const Pose2& b = body.belief();
-    loc.max_position_error_m =
-        std::max(loc.max_position_error_m, (b.translation() - t.translation()).norm());
-    loc.max_heading_error_rad =
-        std::max(loc.max_heading_error_rad, std::abs(normalize_angle(b.theta - t.theta)));
-    pos = next;
-    out.route.push_back(pos);
-    if (Status n = notify(); !n) return n.error();
+    ++loc.repositionings;
+    back_to(from_m);
+    after_turn = true;  // the repeated step ends with a fix
   }
-  if (loc.fixes > 0) loc.mean_fix_error_m = fix_error_sum_m / loc.fixes;
-  Result<BobExplorerSummary> summary = explorer.summary();
-  if (!summary) return summary.error();
-  BobExplorerSummary& sum = *summary;
-  out.stop_reason = sum.stop_reason;
-  // The explorer kept the final map current in the robot's buffer.
-  std::vector<std::uint8_t> packed_bytes(bob::PackedMap::bytes_needed(g.width(), g.height()));
-  std::vector<std::uint8_t> final_bytes(bob::FinalMap::bytes_needed(g.width(), g.height()));
-  if (sum.packed_map.size() != packed_bytes.size() || sum.final_map.size() != final_bytes.size()) {
-    return runtime_error("explorer: the maps it returned are " +
-                         std::to_string(sum.packed_map.size()) + " and " +
-                         std::to_string(sum.final_map.size()) + " bytes, expected " +
-                         std::to_string(packed_bytes.size()) + " and " +
-                         std::to_string(final_bytes.size()));
-  }
-  bob::PackedMap map;
-  bob::FinalMap final_map;
-  (void)map.init(packed_bytes.data(), packed_bytes.size(), g.width(), g.height());
-  (void)final_map.init(final_bytes.data(), final_bytes.size(), g.width(), g.height());
-  std::copy(sum.packed_map.begin(), sum.packed_map.end(), packed_bytes.begin());
-  std::copy(sum.final_map.begin(), sum.final_map.end(), final_bytes.begin());
-  out.final_map = sum.final_map;
+}
 
-  // Table 1.
-  BobTableRow& row = out.row;
-  row.cells = static_cast<int>(n_cells);
-  out.sensed.assign(g.size(), 0);
-  std::vector<std::uint8_t> visited(g.size(), 0);
-  for (const Cell c : out.route) visited[g.index_of(c)] = 1;
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    const Cell c = g.cell_of(i);
-    const bob::CellState st = map.state(to_grid(c));
-    row.visited_cells += visited[i];
-    if (st == bob::CellState::kUnsensed) continue;
-    out.sensed[i] = 1;
-    ++row.sensed_cells;
-    // What the user gets: the final map, in which a visited cell with an obstacle detected inside
-    // is occupied (decision 0008).
-    const bool occupied = final_map.occupied(to_grid(c));
-    // Scored with a band of boundary_tolerance_m either side of the cell's edges (see
-    // BobTableRow); the strict counts use the cell's own edges.
-    const Vec2 centre = g.center_of(c);
-    const Vec2 half{0.5 * options.cell_m, 0.5 * options.cell_m};
-    const Vec2 band{options.boundary_tolerance_m, options.boundary_tolerance_m};
-    if (occupied) {
-      if (truth.free(c)) ++row.empty_as_occupied_strict;
-      if (!world.any_solid_in(centre - half - band, centre + half + band)) {
-        ++row.empty_as_occupied;
-      }
-    } else {
-      if (truth.solid(c)) ++row.occupied_as_empty_strict;
-      if (world.any_solid_in(centre - half + band, centre + half - band)) {
-        ++row.occupied_as_empty;
-      }
-    }
+/// Back to where it came from, the cell it could not enter marked occupied; a fix there.
+Status BobMission::State::bumped(Cell next) {
+  ++loc.bumps;
+  bumps_in_a_row = next == last_bumped ? bumps_in_a_row + 1 : 1;
+  last_bumped = next;
+  back_to(g.center_of(pos));
+  if (Status ok = expect_ok(explorer->blocked(), "explorer: "); !ok) return ok;
+  if (!options.perfect_localisation) {
+    linear_since_fix = 0;
+    (void)take_fix();
   }
-  row.resensed = static_cast<int>(sum.resensed);
-  row.ignored_readings = static_cast<int>(sum.ignored_readings);
-  row.path_cells = static_cast<int>(sum.moves);
-  row.turns = static_cast<int>(sum.turns);
-  row.success_rate =
-      static_cast<double>(row.cells - row.empty_as_occupied - row.occupied_as_empty) / row.cells;
-  row.success_rate_strict =
-      static_cast<double>(row.cells - row.empty_as_occupied_strict - row.occupied_as_empty_strict) /
-      row.cells;
-  row.path_share = static_cast<double>(row.path_cells) / row.cells;
-  row.visited_share = static_cast<double>(row.visited_cells) / row.cells;
-  const std::vector<std::uint8_t> reachable = truth.reachable_from(start);
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    if (reachable[i] == 0) continue;
-    ++row.free_reachable;
-    const Cell c = g.cell_of(i);
-    for (const Cell d : kNeighbors4) {
-      const Cell m = c + d;
-      if (!g.contains(m) || reachable[g.index_of(m)] == 0) ++row.boundary_edges;
-    }
+  return Ok{};
+}
+
+Status BobMission::State::entered(Cell next, const StepSensing& seen) {
+  bumps_in_a_row = 0;
+  if (const Result<bob::Status> r = explorer->report(seen); !r) return r.error();
+  const Pose2& t = body->truth();
+  const Pose2& b = body->belief();
+  loc.max_position_error_m =
+      std::max(loc.max_position_error_m, (b.translation() - t.translation()).norm());
+  loc.max_heading_error_rad =
+      std::max(loc.max_heading_error_rad, std::abs(normalize_angle(b.theta - t.theta)));
+  pos = next;
+  route.push_back(pos);
+  return Ok{};
+}
+
+Result<BobMission> BobMission::create(const World& world, const World& grid_truth,
+                                      const BobMissionOptions& options,
+                                      BobExplorerPort& explorer) {
+  auto s = std::make_unique<State>();
+  s->world = &world;
+  s->truth = &grid_truth;
+  s->options = options;
+  s->options.on_step = nullptr;  // run_bob's, not the mission's
+  s->explorer = &explorer;
+  s->g = grid_truth.geometry();
+  s->setup = bob_setup(options, s->g);
+  if (Status ok = check_setup(options, s->g, s->setup); !ok) return ok.error();
+  Result<std::vector<Cell>> candidates = bob_start_cells(grid_truth, options);
+  if (!candidates) return candidates.error();
+  s->rng = Rng(options.seed);
+  if (Status ok = s->place(*candidates); !ok) return ok.error();
+  s->body.emplace(s->setup.body, centred_pose(s->g, s->start, 0), s->rng);
+  s->pos = s->start;
+  s->route.push_back(s->start);
+  s->max_moves = kSafetyMovesPerCell * static_cast<long long>(s->g.size());
+  return BobMission(std::move(s));
+}
+
+BobMission::BobMission(std::unique_ptr<State> state) : s_(std::move(state)) {}
+BobMission::BobMission(BobMission&&) noexcept = default;
+BobMission& BobMission::operator=(BobMission&&) noexcept = default;
+BobMission::~BobMission() = default;
+
+Status BobMission::step() {
+  State& s = *s_;
+  if (s.finished) return Ok{};
+  if (s.moves > s.max_moves) {
+    return runtime_error("the explorer did not stop within " + std::to_string(s.max_moves) +
+                         " moves");
   }
-  const double c_cells = row.free_reachable;
-  row.path_per_c = c_cells > 0 ? row.path_cells / c_cells : 0.0;
-  const double bound = c_cells + 0.5 * row.boundary_edges - 3.0;
-  row.path_per_smartdfs = bound > 0 ? row.path_cells / bound : 0.0;
+  ++s.moves;
+  bob::Direction d{};
+  const Result<bob::Status> st = s.explorer->next_move(d);
+  if (!st) return st.error();
+  if (*st == bob::Status::kFinished) {
+    s.finished = true;
+    return Ok{};
+  }
+  if (*st != bob::Status::kOk) {
+    return runtime_error(std::string("explorer: ") + bob::status_name(*st));
+  }
+  const Cell next = s.pos + kNeighbors4[static_cast<std::size_t>(static_cast<int>(d))];
+  const bool after_turn = d != s.heading;
+  s.heading = d;
+  StepSensing seen;
+  if (s.drive(next, after_turn, seen)) return s.bumped(next);
+  return s.entered(next, seen);
+}
+
+bool BobMission::finished() const { return s_->finished; }
+const GridGeometry& BobMission::grid() const { return s_->g; }
+Cell BobMission::start() const { return s_->start; }
+const std::vector<Cell>& BobMission::route() const { return s_->route; }
+Pose2 BobMission::true_pose() const { return s_->body->truth(); }
+Pose2 BobMission::believed_pose() const { return s_->body->belief(); }
+
+BobLocalisationStats BobMission::localisation() const {
+  BobLocalisationStats loc = s_->loc;
+  if (loc.fixes > 0) loc.mean_fix_error_m = s_->fix_error_sum_m / loc.fixes;
+  return loc;
+}
+
+Result<BobResult> BobMission::snapshot() {
+  const State& s = *s_;
+  Result<BobExplorerSummary> now = s.explorer->snapshot();
+  if (!now) return now.error();
+  BobResult view;
+  view.start = s.start;
+  view.width = s.g.width();
+  view.height = s.g.height();
+  view.route = s.route;
+  view.final_map = now->final_map;
+  fill_cells(*now, s.g, view);
+  return view;
+}
+
+Result<BobResult> BobMission::result() {
+  TESSERA_ASSERT(finished());
+  const State& s = *s_;
+  Result<BobExplorerSummary> summary = s.explorer->summary();
+  if (!summary) return summary.error();
+  const BobExplorerSummary& sum = *summary;
+  if (Status ok = check_map_sizes(sum, s.g); !ok) return ok.error();
+  BobResult out;
+  out.route = s.route;
+  out.width = s.g.width();
+  out.height = s.g.height();
+  out.start = s.start;
+  out.final_map = sum.final_map;
+  fill_cells(sum, s.g, out);
+  out.moves = static_cast<int>(sum.moves);
+  out.turns = static_cast<int>(sum.turns);
+  out.resensed = static_cast<int>(sum.resensed);
+  out.ignored_readings = static_cast<int>(sum.ignored_readings);
+  out.localisation = localisation();
+  out.stop_reason = sum.stop_reason;
   return out;
+}
+
+namespace {
+
+Status notify(BobMission& mission, const BobMissionOptions& options) {
+  if (!options.on_step) return Ok{};
+  Result<BobResult> view = mission.snapshot();
+  if (!view) return view.error();
+  options.on_step(*view);
+  return Ok{};
+}
+
+}  // namespace
+
+Result<BobResult> run_bob(const World& world, const World& grid_truth,
+                          const BobMissionOptions& options, BobExplorerPort& explorer) {
+  Result<BobMission> mission = BobMission::create(world, grid_truth, options, explorer);
+  if (!mission) return mission.error();
+  if (Status n = notify(*mission, options); !n) return n.error();
+  while (!mission->finished()) {
+    if (Status s = mission->step(); !s) return s.error();
+    if (mission->finished()) break;
+    if (Status n = notify(*mission, options); !n) return n.error();
+  }
+  return mission->result();
+}
+
+Result<BobResult> run_bob(const World& world, const BobMissionOptions& options) {
+  Result<World> truth = bob_grid_truth(world, options);
+  if (!truth) return truth.error();
+  const std::unique_ptr<BobExplorerPort> explorer = local_bob_explorer();
+  return run_bob(world, *truth, options, *explorer);
 }
 
 }  // namespace tessera

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "tessera/eval/coverage.hpp"
+#include "tessera/eval/exploration_score.hpp"
 #include "tessera/explore/frontier_set.hpp"
 #include "tessera/explore/path_search.hpp"
 
@@ -19,7 +19,6 @@ using Clock = std::chrono::steady_clock;
 constexpr int kMaxRobots = 64;
 constexpr std::int64_t kSafetyStepsPerFreeCell = 50;
 constexpr std::int64_t kMaxIdleBackoffSteps = 32;
-constexpr std::size_t kMaxSeriesSamples = 8192;
 constexpr std::uint8_t kMaxTargetChoices = 3;
 
 double seconds_since(Clock::time_point t0) {
@@ -133,240 +132,305 @@ Result<std::vector<Cell>> exploration_starts(const World& world,
   return starts;
 }
 
-Result<ExplorationResult> run_exploration(
-    const World& world, const ExplorationMissionOptions& o,
-    const std::function<void(const ExplorationProgress&)>& progress) {
-  if (auto problem = validate(o)) return usage_error("exploration options: " + *problem);
-  Result<std::vector<Cell>> starts = exploration_starts(world, o);
+ScanInsertOptions effective_scan_insert(const ExplorationMissionOptions& o) {
+  ScanInsertOptions s = o.scan_insert;
+  // Noise is truncated at 3 sigma in the simulator; a margin just above it keeps every wall cell.
+  if (o.free_margin_from_noise) s.free_margin_m = 3.0 * o.lidar.range_noise_stddev_m + 1e-4;
+  return s;
+}
+
+ExplorationMission::ExplorationMission(const GridGeometry& geometry,
+                                       const ExplorationMissionOptions& options,
+                                       std::vector<Cell> starts)
+    : options_(options),
+      scan_insert_(effective_scan_insert(options)),
+      starts_(std::move(starts)),
+      map_(geometry),
+      frontier_(map_, options.low),
+      explorer_(
+          FrontierExplorerOptions{
+              .strategy = options.strategy,
+              .low = options.low,
+              .spread_radius_cells = options.spread_radius_cells,
+          },
+          options.robots),
+      low_log_odds_(log_odds(options.low)),
+      stood_in_(geometry.size(), 0),
+      times_chosen_(geometry.size(), 0),
+      robots_(starts_.size()),
+      paths_(starts_.size()) {
+  TESSERA_ASSERT(!validate(options).has_value());
+  TESSERA_ASSERT(starts_.size() == static_cast<std::size_t>(options.robots));
+  for (std::size_t r = 0; r < starts_.size(); ++r) {
+    TESSERA_ASSERT(geometry.contains(starts_[r]));
+    robots_[r].cell = starts_[r];
+  }
+}
+
+const ExplorationMission::RobotState& ExplorationMission::robot_at(int r) const {
+  TESSERA_ASSERT(0 <= r && r < options_.robots);
+  return robots_[static_cast<std::size_t>(r)];
+}
+
+ExplorationMission::RobotState& ExplorationMission::robot_at(int r) {
+  TESSERA_ASSERT(0 <= r && r < options_.robots);
+  return robots_[static_cast<std::size_t>(r)];
+}
+
+void ExplorationMission::apply_touched() {
+  const GridGeometry& g = map_.geometry();
+  // A cell a robot has stood in stays free (see stood_in_).
+  const double stood_in_p = options_.sensor == RobotKind::kCell ? options_.cell_sensor.p_free
+                                                                : scan_insert_.model.p_clamp_min;
+  for (const Cell c : touched_) {
+    if (stood_in_[g.index_of(c)] != 0 && !map_.is_free_below(c, low_log_odds_)) {
+      map_.set_probability(c, stood_in_p);
+    }
+  }
+  frontier_.update(map_, touched_);
+  changed_.insert(changed_.end(), touched_.begin(), touched_.end());
+}
+
+// Algo 9.1 lines 10-12: sense, and mark the grid with occupancy probabilities.
+void ExplorationMission::insert(const Pose2& T_map_robot, const ExplorationReading& reading) {
+  touched_.clear();
+  if (const CellReading* cells = std::get_if<CellReading>(&reading)) {
+    TESSERA_ASSERT(options_.sensor == RobotKind::kCell);
+    insert_cell_reading(map_, *cells, options_.cell_sensor, &touched_);
+  } else {
+    TESSERA_ASSERT(options_.sensor == RobotKind::kLidar);
+    insert_scan(map_, T_map_robot, std::get<RangeScan>(reading), scan_insert_, &touched_);
+  }
+  apply_touched();
+}
+
+void ExplorationMission::sense(int robot, const Pose2& T_map_robot,
+                               const ExplorationReading& reading) {
+  TESSERA_ASSERT(step_ == 0);
+  const RobotState& s = robot_at(robot);
+  stood_in_[map_.geometry().index_of(s.cell)] = 1;
+  paths_[static_cast<std::size_t>(robot)].push_back(T_map_robot);
+  insert(T_map_robot, reading);
+}
+
+bool ExplorationMission::needs_plan(int r) const {
+  const RobotState& s = robot_at(r);
+  if (!s.plan.has_value()) return true;  // idle: cheap unless the map or the claims changed
+  const Cell target = s.plan->target;
+  if (s.cell == target) return true;
+  if (!frontier_.contains(target) || explorer_.blacklisted(target)) return true;
+  return !map_.is_free_below(s.plan->path[s.next], low_log_odds_);
+}
+
+void ExplorationMission::replan(int r) {
+  RobotState& s = robot_at(r);
+  const Cell here = s.cell;
+  for (;;) {
+    std::optional<FrontierPlan> p = explorer_.plan(map_, frontier_, r, here);
+    // The robot has already sensed where it stands (at its start and after every move): a
+    // frontier cell under it cannot be resolved by going there.
+    if (p.has_value() && p->target == here) {
+      explorer_.blacklist(here);
+      continue;
+    }
+    // A noisy reading can flip a cell at a wall between free and occupied; each time it turns
+    // free it is a frontier again (the wall behind it is never seen) and used to draw the robot
+    // back. A cell chosen as a target more than kMaxTargetChoices times is given up on.
+    if (p.has_value() &&
+        ++times_chosen_[map_.geometry().index_of(p->target)] > kMaxTargetChoices) {
+      explorer_.blacklist(p->target);
+      continue;
+    }
+    s.plan = std::move(p);
+    s.next = 1;
+    if (s.plan.has_value()) {
+      s.backoff_steps = 0;
+    } else {
+      s.backoff_steps = std::min<std::int64_t>(std::max<std::int64_t>(1, 2 * s.backoff_steps),
+                                               kMaxIdleBackoffSteps);
+      s.retry_step = step_ + s.backoff_steps;
+    }
+    return;
+  }
+}
+
+/// Replans the robots that need it; true when some robot has a plan.
+bool ExplorationMission::plan_all() {
+  bool any_plan = false;
+  for (int r = 0; r < options_.robots; ++r) {
+    const RobotState& s = robot_at(r);
+    const bool idle_waiting = !s.plan.has_value() && step_ < s.retry_step;
+    if (!idle_waiting && needs_plan(r)) replan(r);
+    any_plan = any_plan || s.plan.has_value();
+  }
+  if (any_plan) return true;
+  // Before stopping, every robot looks again; FrontierExplorer answers at once for a robot whose
+  // failed search saw the current map and claims.
+  for (int r = 0; r < options_.robots; ++r) {
+    replan(r);
+    any_plan = any_plan || robot_at(r).plan.has_value();
+  }
+  return any_plan;
+}
+
+const std::vector<ExplorationMove>& ExplorationMission::decide() {
+  moves_this_step_.clear();
+  changed_.clear();
+  if (finished()) return moves_this_step_;
+  const Clock::time_point t_plan = Clock::now();
+  const bool any_plan = plan_all();
+  planning_time_s_ += seconds_since(t_plan);
+  if (!any_plan) {
+    stop_reason_ = kStopNoReachableFrontier;
+  } else if (options_.max_steps > 0 && step_ >= options_.max_steps) {
+    stop_reason_ = kStopStepLimit;
+  }
+  if (finished()) return moves_this_step_;
+  for (int r = 0; r < options_.robots; ++r) {
+    const RobotState& s = robot_at(r);
+    if (s.plan.has_value()) moves_this_step_.push_back({r, s.plan->path[s.next]});
+  }
+  return moves_this_step_;
+}
+
+void ExplorationMission::moved(int robot, const Pose2& T_map_robot, double distance_m,
+                               const ExplorationReading& reading) {
+  RobotState& s = robot_at(robot);
+  TESSERA_ASSERT(s.plan.has_value());
+  const Cell from = s.cell;
+  const Cell to = s.plan->path[s.next];
+  ++s.next;
+  s.cell = to;
+  distance_m_ += distance_m;
+  ++moves_;
+  const Cell direction = to - from;
+  if (s.last_step.has_value() && *s.last_step != direction) ++turns_;
+  s.last_step = direction;
+  paths_[static_cast<std::size_t>(robot)].push_back(T_map_robot);
+  stood_in_[map_.geometry().index_of(to)] = 1;
+  insert(T_map_robot, reading);
+  if (to == s.plan->target && frontier_.contains(to)) explorer_.blacklist(to);
+}
+
+// A refused move: the robot bumped into the cell, which the map now holds as an obstacle.
+void ExplorationMission::refused(int robot) {
+  RobotState& s = robot_at(robot);
+  TESSERA_ASSERT(s.plan.has_value());
+  const Cell to = s.plan->path[s.next];
+  ++refused_moves_;
+  map_.set_probability(to, options_.sensor == RobotKind::kCell ? options_.cell_sensor.p_occupied
+                                                               : scan_insert_.model.p_clamp_max);
+  touched_.assign(1, to);
+  apply_touched();
+  s.plan.reset();
+  explorer_.release(robot);
+}
+
+void ExplorationMission::end_step() {
+  TESSERA_ASSERT(!finished());
+  ++step_;
+}
+
+std::vector<Cell> ExplorationMission::unreachable_frontier() const {
+  const GridGeometry& g = map_.geometry();
+  FreeSpaceBfs bfs;
+  std::vector<std::uint8_t> reached(g.size(), 0);
+  for (const RobotState& s : robots_) {
+    if (reached[g.index_of(s.cell)] != 0) continue;
+    bfs.start(map_, s.cell, options_.low);
+    while (const std::optional<Cell> v = bfs.next()) reached[g.index_of(*v)] = 1;
+  }
+  std::vector<Cell> out;
+  for (const Cell c : frontier_.cells()) {
+    if (reached[g.index_of(c)] == 0) out.push_back(c);
+  }
+  return out;
+}
+
+namespace {
+
+ExplorationReading read_sensor(Simulator& sim, int robot, RobotKind kind) {
+  if (kind == RobotKind::kCell) return sim.sense_cells(robot);
+  return sim.scan(robot);
+}
+
+}  // namespace
+
+Result<SimulatedExploration> start_exploration(const World& world,
+                                               const ExplorationMissionOptions& options) {
+  if (auto problem = validate(options)) return usage_error("exploration options: " + *problem);
+  Result<std::vector<Cell>> starts = exploration_starts(world, options);
   if (!starts) return starts.error();
+  ExplorationMissionOptions robot_side = options;
+  if (robot_side.max_steps == 0) {
+    robot_side.max_steps =
+        kSafetyStepsPerFreeCell * static_cast<std::int64_t>(std::max<std::size_t>(
+                                      world.free_count(), 1));
+  }
+  SimulatedExploration run{Simulator(world, options.seed),
+                           ExplorationMission(world.geometry(), robot_side, *starts)};
+  RobotSpec spec;
+  spec.kind = options.sensor;
+  spec.lidar = options.lidar;
+  for (const Cell s : *starts) {
+    if (Result<int> id = run.sim.add_robot(s, spec); !id) return id.error();
+  }
+  for (int r = 0; r < options.robots; ++r) {
+    run.mission.sense(r, run.sim.pose(r), read_sensor(run.sim, r, options.sensor));
+  }
+  return run;
+}
+
+void step_exploration(SimulatedExploration& run) {
+  const RobotKind kind = run.mission.options().sensor;
+  for (const ExplorationMove& m : run.mission.decide()) {
+    const MoveOutcome outcome = run.sim.move_to_adjacent(m.robot, m.to);
+    if (outcome.moved) {
+      run.mission.moved(m.robot, run.sim.pose(m.robot), outcome.distance_m,
+                        read_sensor(run.sim, m.robot, kind));
+    } else {
+      run.mission.refused(m.robot);
+    }
+  }
+  if (!run.mission.finished()) run.mission.end_step();
+}
+
+Result<ExplorationResult> run_exploration(
+    const World& world, const ExplorationMissionOptions& options,
+    const std::function<void(const ExplorationProgress&)>& progress) {
+  Result<SimulatedExploration> started = start_exploration(world, options);
+  if (!started) return started.error();
+  SimulatedExploration& run = *started;
+  const ExplorationMission& mission = run.mission;
+  // The truth's side: coverage of the reachable free cells after every step.
+  ExplorationScorer scorer(world.reachable_from(mission.starts().front()), options.robots);
+  const auto observe = [&] {
+    scorer.observe(mission.steps(), mission.distance_m(), mission.map(), mission.changed_cells());
+  };
+  observe();
+  Clock::time_point last_progress = Clock::now();
+  for (step_exploration(run); !mission.finished(); step_exploration(run)) {
+    observe();
+    if (progress && Clock::now() - last_progress >= std::chrono::milliseconds(500)) {
+      last_progress = Clock::now();
+      progress(ExplorationProgress{mission.steps(), scorer.coverage(), mission.frontier().size()});
+    }
+  }
 
   ExplorationResult out;
-  out.starts = std::move(starts).value();
+  out.metrics = scorer.finish(mission.steps(), mission.distance_m(), mission.moves(),
+                              mission.turns(), mission.stop_reason());
+  out.accuracy = compare_to_truth(mission.map(), TruthGrid(world.geometry(), world.solid_cells()));
+  out.map = mission.map();
+  out.paths = mission.paths();
+  out.frontier_left = mission.frontier().cells();
+  out.unreachable_frontier = mission.unreachable_frontier();
+  out.blacklisted_targets = mission.blacklisted_targets();
+  out.starts = mission.starts();
   out.free_cells = world.free_count();
-  const GridGeometry& geometry = world.geometry();
-  const int robot_count = o.robots;
-  const auto robots_n = static_cast<std::size_t>(robot_count);
-
-  Simulator sim(world, o.seed);
-  RobotSpec spec;
-  spec.kind = o.sensor;
-  spec.lidar = o.lidar;
-  for (const Cell s : out.starts) {
-    if (Result<int> id = sim.add_robot(s, spec); !id) return id.error();
-  }
-
-  out.map = OccupancyGrid(geometry);
-  OccupancyGrid& map = out.map;
-  FrontierSet frontier(map, o.low);
-  CoverageTracker coverage(world.reachable_from(out.starts.front()));
-  out.reachable_free_cells = coverage.reachable_cells();
-  FrontierExplorerOptions explorer_options;
-  explorer_options.strategy = o.strategy;
-  explorer_options.low = o.low;
-  explorer_options.spread_radius_cells = o.spread_radius_cells;
-  FrontierExplorer explorer(explorer_options, robot_count);
-  const float low_log_odds = log_odds(o.low);
-
-  std::vector<Cell> touched;
-  // Cells a robot has stood in: free for certain (BOBMapping 3.1: "a cell the robot has stood in
-  // can never become occupied"). A grazing lidar return can otherwise darken the one-cell passage a
-  // robot came through and shut it in.
-  std::vector<std::uint8_t> stood_in(geometry.size(), 0);
-  const double stood_in_p =
-      o.sensor == RobotKind::kCell ? o.cell_sensor.p_free : o.scan_insert.model.p_clamp_min;
-  const auto keep_stood_in_cells_free = [&] {
-    for (const Cell c : touched) {
-      if (stood_in[geometry.index_of(c)] != 0 && !map.is_free_below(c, low_log_odds)) {
-        map.set_probability(c, stood_in_p);
-      }
-    }
-  };
-  const auto apply_touched = [&] {
-    keep_stood_in_cells_free();
-    frontier.update(map, touched);
-    coverage.update(map, touched);
-  };
-  // Algo 9.1 lines 10-12: sense, and mark the grid with occupancy probabilities.
-  const auto sense = [&](int r) {
-    stood_in[geometry.index_of(sim.cell(r))] = 1;
-    touched.clear();
-    if (o.sensor == RobotKind::kCell) {
-      insert_cell_reading(map, sim.sense_cells(r), o.cell_sensor, &touched);
-    } else {
-      const RangeScan scan = sim.scan(r);
-      insert_scan(map, sim.pose(r), scan, o.scan_insert, &touched);
-    }
-    apply_touched();
-  };
-  // A refused move: the robot bumped into the cell, which the map now holds as an obstacle.
-  const auto bump = [&](Cell c) {
-    map.set_probability(c, o.sensor == RobotKind::kCell ? o.cell_sensor.p_occupied
-                                                        : o.scan_insert.model.p_clamp_max);
-    touched.assign(1, c);
-    apply_touched();
-  };
-
-  struct RobotState {
-    std::optional<FrontierPlan> plan;
-    std::size_t next = 1;           // index into plan->path of the next cell to enter
-    std::optional<Cell> last_step;  // direction of the previous move, for counting turns
-    // An idle robot (its last plan failed) retries at this step; the wait doubles with each failure
-    // while other robots are busy, so idle robots do not search their whole free component every
-    // step. When no robot has a plan, every idle robot retries at once (see the loop).
-    std::int64_t retry_step = 0;
-    std::int64_t backoff_steps = 0;
-  };
-  std::vector<RobotState> state(robots_n);
-  out.paths.resize(robots_n);
-  for (int r = 0; r < robot_count; ++r) {
-    out.paths[static_cast<std::size_t>(r)].push_back(sim.pose(r));
-    sense(r);
-  }
-
-  std::int64_t step = 0;
-  std::vector<std::uint8_t> times_chosen(geometry.size(), 0);
-  const auto needs_plan = [&](int r) {
-    const RobotState& s = state[static_cast<std::size_t>(r)];
-    if (!s.plan.has_value()) return true;  // idle: cheap unless the map or the claims changed
-    const Cell target = s.plan->target;
-    if (sim.cell(r) == target) return true;
-    if (!frontier.contains(target) || explorer.blacklisted(target)) return true;
-    return !map.is_free_below(s.plan->path[s.next], low_log_odds);
-  };
-  const auto replan = [&](int r) {
-    RobotState& s = state[static_cast<std::size_t>(r)];
-    const Cell here = sim.cell(r);
-    for (;;) {
-      std::optional<FrontierPlan> p = explorer.plan(map, frontier, r, here);
-      // The robot has already sensed where it stands (at its start and after every move): a
-      // frontier cell under it cannot be resolved by going there.
-      if (p.has_value() && p->target == here) {
-        explorer.blacklist(here);
-        continue;
-      }
-      // A noisy reading can flip a cell at a wall between free and occupied; each time it turns
-      // free it is a frontier again (the wall behind it is never seen) and used to draw the robot
-      // back. A cell chosen as a target more than kMaxTargetChoices times is given up on.
-      if (p.has_value() && ++times_chosen[geometry.index_of(p->target)] > kMaxTargetChoices) {
-        explorer.blacklist(p->target);
-        continue;
-      }
-      s.plan = std::move(p);
-      s.next = 1;
-      if (s.plan.has_value()) {
-        s.backoff_steps = 0;
-      } else {
-        s.backoff_steps = std::min<std::int64_t>(std::max<std::int64_t>(1, 2 * s.backoff_steps),
-                                                 kMaxIdleBackoffSteps);
-        s.retry_step = step + s.backoff_steps;
-      }
-      return;
-    }
-  };
-
-  ExplorationMetrics& m = out.metrics;
-  m.robots = robot_count;
-  double path_m = 0.0;
-  add_sample(m, {0, 0.0, coverage.coverage()});
-  std::int64_t series_stride = 1;
-  const std::int64_t max_steps =
-      o.max_steps > 0 ? o.max_steps
-                      : kSafetyStepsPerFreeCell *
-                            static_cast<std::int64_t>(std::max<std::size_t>(out.free_cells, 1));
-  Clock::time_point last_progress = Clock::now();
-
-  for (;;) {
-    const Clock::time_point t_plan = Clock::now();
-    bool any_plan = false;
-    for (int r = 0; r < robot_count; ++r) {
-      const RobotState& s = state[static_cast<std::size_t>(r)];
-      const bool idle_waiting = !s.plan.has_value() && step < s.retry_step;
-      if (!idle_waiting && needs_plan(r)) replan(r);
-      any_plan = any_plan || s.plan.has_value();
-    }
-    if (!any_plan) {
-      // Before stopping, every robot looks again; FrontierExplorer answers at once for a robot
-      // whose failed search saw the current map and claims.
-      for (int r = 0; r < robot_count; ++r) {
-        replan(r);
-        any_plan = any_plan || state[static_cast<std::size_t>(r)].plan.has_value();
-      }
-    }
-    out.planning_time_s += seconds_since(t_plan);
-    if (!any_plan) {
-      m.stop_reason = kStopNoReachableFrontier;
-      break;
-    }
-    if (step >= max_steps) {
-      m.stop_reason = kStopStepLimit;
-      break;
-    }
-
-    for (int r = 0; r < robot_count; ++r) {
-      RobotState& s = state[static_cast<std::size_t>(r)];
-      if (!s.plan.has_value()) continue;
-      const Cell from = sim.cell(r);
-      const Cell to = s.plan->path[s.next];
-      const MoveOutcome moved = sim.move_to_adjacent(r, to);
-      if (!moved.moved) {
-        ++out.refused_moves;
-        bump(to);
-        s.plan.reset();
-        explorer.release(r);
-        continue;
-      }
-      ++s.next;
-      path_m += moved.distance_m;
-      ++m.path_length_cells;
-      const Cell direction = to - from;
-      if (s.last_step.has_value() && *s.last_step != direction) ++m.turns;
-      s.last_step = direction;
-      out.paths[static_cast<std::size_t>(r)].push_back(sim.pose(r));
-      sense(r);
-      if (to == s.plan->target && frontier.contains(to)) explorer.blacklist(to);
-    }
-    ++step;
-    const CoverageSample sample{step, path_m, coverage.coverage()};
-    record_milestones(m, sample);
-    if (step % series_stride == 0) {
-      m.coverage_over_time.push_back(sample);
-      if (m.coverage_over_time.size() > kMaxSeriesSamples) {
-        // Keep the samples on multiples of twice the stride (step 0 included).
-        series_stride *= 2;
-        std::erase_if(m.coverage_over_time,
-                      [&](const CoverageSample& x) { return x.step % series_stride != 0; });
-      }
-    }
-    if (progress) {
-      const Clock::time_point now = Clock::now();
-      if (now - last_progress >= std::chrono::milliseconds(500)) {
-        last_progress = now;
-        progress(ExplorationProgress{step, coverage.coverage(), frontier.size()});
-      }
-    }
-  }
-
-  m.steps = step;
-  m.path_length_m = path_m;
-  if (m.coverage_over_time.back().step != step) {
-    m.coverage_over_time.push_back({step, path_m, coverage.coverage()});
-  }
-  out.accuracy = compare_to_truth(map, TruthGrid(world.geometry(), world.solid_cells()));
-  out.frontier_left = frontier.cells();
-  out.blacklisted_targets = explorer.blacklisted_cells();
-  // Frontier cells no robot can reach through known free cells. One full search per connected group
-  // of robots.
-  FreeSpaceBfs bfs;
-  std::vector<std::uint8_t> reached(geometry.size(), 0);
-  for (int r = 0; r < robot_count; ++r) {
-    const Cell c = sim.cell(r);
-    if (reached[geometry.index_of(c)] != 0) continue;
-    bfs.start(map, c, o.low);
-    while (const std::optional<Cell> v = bfs.next()) reached[geometry.index_of(*v)] = 1;
-  }
-  for (const Cell c : out.frontier_left) {
-    if (reached[geometry.index_of(c)] == 0) out.unreachable_frontier.push_back(c);
-  }
+  out.reachable_free_cells = scorer.reachable_cells();
+  out.refused_moves = mission.refused_moves();
+  out.planning_time_s = mission.planning_time_s();
   return out;
 }
 

@@ -59,13 +59,14 @@ nlohmann::json bob_map_accuracy_json(const BobTableRow& r) {
           {"path_per_smartdfs_bound", r.path_per_smartdfs}};
 }
 
-nlohmann::json bob_report(const BobResult& r, const BobReportContext& context) {
+nlohmann::json bob_report(const BobResult& r, const BobTableRow& row,
+                          const BobReportContext& context) {
   nlohmann::json j = core_report(context.run);
   j["world"] = {{"file", context.world_file},
                 {"resolution_m", context.world_resolution_m},
                 {"width_cells", r.width},
                 {"height_cells", r.height}};
-  j["map_accuracy"] = bob_map_accuracy_json(r.row);
+  j["map_accuracy"] = bob_map_accuracy_json(row);
   j["map_accuracy"]["stop_reason"] = stop_reason_name(r.stop_reason);
   j["map_accuracy"]["variant"] = context.variant;
   j["localisation"] = localisation_json(r.localisation);

@@ -1,5 +1,7 @@
 #include "tessera/sim/world.hpp"
 
+#include "tessera/grid/cell_region.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -62,33 +64,8 @@ World World::resampled(double resolution_m) const {
   return World(coarse, std::move(solid), name_);
 }
 
-namespace {
-
-// The cells [x0, x1) x [y0, y1) of `g` that the rectangle [lo_m, hi_m] overlaps with positive
-// area (an edge on a cell boundary takes no extra cell).
-struct CellRange {
-  int x0, y0, x1, y1;
-};
-CellRange cells_overlapping(const GridGeometry& g, Vec2 lo_m, Vec2 hi_m) {
-  constexpr double kTol = 1e-9;
-  const double r = g.resolution_m();
-  const Vec2 o = g.origin();
-  return {static_cast<int>(std::floor((lo_m.x - o.x) / r + kTol)),
-          static_cast<int>(std::floor((lo_m.y - o.y) / r + kTol)),
-          static_cast<int>(std::ceil((hi_m.x - o.x) / r - kTol)),
-          static_cast<int>(std::ceil((hi_m.y - o.y) / r - kTol))};
-}
-
-}  // namespace
-
 bool World::any_solid_in(Vec2 lo_m, Vec2 hi_m) const {
-  const CellRange c = cells_overlapping(geometry_, lo_m, hi_m);
-  for (int y = c.y0; y < c.y1; ++y) {
-    for (int x = c.x0; x < c.x1; ++x) {
-      if (solid({x, y})) return true;
-    }
-  }
-  return false;
+  return any_cell_in(geometry_, lo_m, hi_m, [this](Cell c) { return solid(c); });
 }
 
 double World::distance_to_solid(Vec2 p_m, double search_m) const {
@@ -139,25 +116,8 @@ double World::cast_ray(Vec2 from_m, double angle_rad, double max_range_m) const 
 }
 
 std::vector<std::uint8_t> World::reachable_from(Cell start) const {
-  std::vector<std::uint8_t> reached(geometry_.size(), 0);
-  if (solid(start)) return reached;  // also covers a start outside the grid
-  // Breadth-first flood fill over 4-neighbours (the lecture robot's moves).
-  std::vector<Cell> queue;
-  queue.reserve(64);
-  reached[geometry_.index_of(start)] = 1;
-  queue.push_back(start);
-  for (std::size_t head = 0; head < queue.size(); ++head) {
-    const Cell c = queue[head];
-    for (const Cell d : kNeighbors4) {
-      const Cell n = c + d;
-      if (solid(n)) continue;
-      std::uint8_t& r = reached[geometry_.index_of(n)];
-      if (r != 0) continue;
-      r = 1;
-      queue.push_back(n);
-    }
-  }
-  return reached;
+  // solid() holds outside the grid, so a start outside reaches nothing.
+  return reachable_4(geometry_, start, [this](Cell c) { return solid(c); });
 }
 
 World::FreeComponents World::free_components() const {

@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "tessera/bob/final_map.hpp"
+#include "tessera/eval/bob_table.hpp"
 #include "tessera/sim/builtin_world.hpp"
 
 namespace tessera {
@@ -36,6 +38,25 @@ World text_world(const std::vector<std::string>& rows, Cell* start = nullptr,
   return World(g, std::move(solid), "text");
 }
 
+/// A run and its Table 1 row (eval/bob_table.hpp).
+struct ScoredRun : BobResult {
+  BobTableRow row;
+};
+
+Result<ScoredRun> run_scored(const World& world, const BobMissionOptions& o) {
+  Result<World> truth = bob_grid_truth(world, o);
+  if (!truth) return truth.error();
+  const std::unique_ptr<BobExplorerPort> explorer = local_bob_explorer();
+  Result<BobResult> r = run_bob(world, *truth, o, *explorer);
+  if (!r) return r.error();
+  ScoredRun out{*r, {}};
+  out.row = score_bob_table(
+      {r->sensed, r->occupied, r->route, r->moves, r->turns, r->resensed, r->ignored_readings},
+      TruthGrid(world.geometry(), world.solid_cells()),
+      TruthGrid(truth->geometry(), truth->solid_cells()), o.boundary_tolerance_m);
+  return out;
+}
+
 std::vector<std::vector<std::string>> worlds() {
   return {
       {"#########", "#.......#", "#.......#", "#..##...#", "#..##...#", "#R......#", "#########"},
@@ -50,7 +71,7 @@ std::vector<std::vector<std::string>> worlds() {
   };
 }
 
-void expect_exact(const World& world, const BobResult& r) {
+void expect_exact(const World& world, const ScoredRun& r) {
   EXPECT_EQ(r.row.empty_as_occupied, 0);
   EXPECT_EQ(r.row.occupied_as_empty, 0);
   EXPECT_DOUBLE_EQ(r.row.success_rate, 1.0);
@@ -82,7 +103,7 @@ TEST(BobMission, NoiseOffGivesAnExactMapForBothVariants) {
       o.variant = v;
       o.noise = false;
       o.start = start;
-      const Result<BobResult> r = run_bob(world, o);
+      const Result<ScoredRun> r = run_scored(world, o);
       ASSERT_TRUE(r.ok()) << r.error().message;
       SCOPED_TRACE(bob_variant_name(v));
       expect_exact(world, *r);
@@ -101,7 +122,7 @@ TEST(BobMission, NoiseOnNeverReadsAnObstacleAsEmpty) {
       BobMissionOptions o;
       o.variant = v;
       o.seed = 7;
-      const Result<BobResult> r = run_bob(world, o);
+      const Result<ScoredRun> r = run_scored(world, o);
       ASSERT_TRUE(r.ok()) << r.error().message;
       EXPECT_EQ(r->row.occupied_as_empty, 0) << bob_variant_name(v) << " world " << rows.size()
                                              << " rows, bumps " << r->localisation.bumps;
@@ -133,7 +154,7 @@ TEST(BobMission, AnObstacleInsideACellTheRobotStoodInIsOccupiedInTheFinalMap) {
     const World world = builtin_world(k.world, 0.05);
     BobMissionOptions o;
     o.seed = k.seed;
-    const Result<BobResult> r = run_bob(world, o);
+    const Result<ScoredRun> r = run_scored(world, o);
     ASSERT_TRUE(r.ok()) << r.error().message;
     EXPECT_EQ(r->row.occupied_as_empty, 0);
     EXPECT_GE(r->row.success_rate, 0.9942);
@@ -151,9 +172,9 @@ TEST(BobMission, ReSensingOffLeavesMoreCellsWrong) {
     SCOPED_TRACE(bob_variant_name(v));
     BobMissionOptions o;
     o.variant = v;
-    const Result<BobResult> on = run_bob(world, o);
+    const Result<ScoredRun> on = run_scored(world, o);
     o.resense = false;
-    const Result<BobResult> off = run_bob(world, o);
+    const Result<ScoredRun> off = run_scored(world, o);
     ASSERT_TRUE(on.ok() && off.ok());
     EXPECT_EQ(off->row.resensed, 0);
     EXPECT_GT(off->row.ignored_readings, 0);
@@ -173,9 +194,9 @@ TEST(BobMission, AnOpenGridSeesTheFloorBeyondItsEdgeNotAWall) {
   const Vec2 hi{3.3, 3.3};
   BobMissionOptions o;
   o.grid_rect_m = std::array<Vec2, 2>{lo, hi};
-  const Result<BobResult> open = run_bob(world, o);
+  const Result<ScoredRun> open = run_scored(world, o);
   o.grid_rect_m.reset();
-  const Result<BobResult> cut = run_bob(world.cropped(lo, hi), o);
+  const Result<ScoredRun> cut = run_scored(world.cropped(lo, hi), o);
   ASSERT_TRUE(open.ok() && cut.ok());
   EXPECT_EQ(open->width, 10);
   EXPECT_EQ(open->row.empty_as_occupied_strict, 0);
@@ -196,13 +217,13 @@ TEST(BobMission, TheElevenByFourteenArenaIsMappedRightInBothVariants) {
       SCOPED_TRACE(std::string(name) + " " + bob_variant_name(v));
       o.variant = v;
       o.noise = false;
-      const Result<BobResult> exact = run_bob(world, o);
+      const Result<ScoredRun> exact = run_scored(world, o);
       ASSERT_TRUE(exact.ok()) << exact.error().message;
       EXPECT_EQ(exact->width, 11);
       EXPECT_EQ(exact->height, 14);
       EXPECT_EQ(exact->row.empty_as_occupied_strict + exact->row.occupied_as_empty_strict, 0);
       o.noise = true;
-      const Result<BobResult> noisy = run_bob(world, o);
+      const Result<ScoredRun> noisy = run_scored(world, o);
       ASSERT_TRUE(noisy.ok()) << noisy.error().message;
       EXPECT_EQ(noisy->row.occupied_as_empty_strict, 0);
     }
@@ -216,9 +237,9 @@ TEST(BobMission, MapAwareIsNeverLongerThanTrail) {
     BobMissionOptions o;
     o.noise = false;
     o.start = start;
-    const Result<BobResult> trail = run_bob(world, o);
+    const Result<ScoredRun> trail = run_scored(world, o);
     o.variant = BobVariant::kMapAware;
-    const Result<BobResult> aware = run_bob(world, o);
+    const Result<ScoredRun> aware = run_scored(world, o);
     ASSERT_TRUE(trail.ok() && aware.ok());
     EXPECT_LE(aware->row.path_cells, trail->row.path_cells);
   }
@@ -229,8 +250,8 @@ TEST(BobMission, IsDeterministicForASeed) {
   const World world = text_world(worlds()[1], &start);
   BobMissionOptions o;
   o.seed = 42;
-  const Result<BobResult> a = run_bob(world, o);
-  const Result<BobResult> b = run_bob(world, o);
+  const Result<ScoredRun> a = run_scored(world, o);
+  const Result<ScoredRun> b = run_scored(world, o);
   ASSERT_TRUE(a.ok() && b.ok());
   EXPECT_EQ(a->route, b->route);
   EXPECT_EQ(a->final_map, b->final_map);
@@ -240,7 +261,7 @@ TEST(BobMission, IsDeterministicForASeed) {
 
 TEST(BobMission, DefaultStartHasAFreeCellInFront) {
   const World world = text_world(worlds()[0]);
-  const Result<BobResult> r = run_bob(world, {});
+  const Result<ScoredRun> r = run_scored(world, {});
   ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_TRUE(world.free(r->start));
   EXPECT_TRUE(world.free(r->start + kNeighbors4[0]));
@@ -252,7 +273,7 @@ TEST(BobMission, CountsCellsAndBoundaryEdgesOfAClosedRoom) {
   BobMissionOptions o;
   o.noise = false;
   o.start = Cell{1, 1};
-  const Result<BobResult> r = run_bob(world, o);
+  const Result<ScoredRun> r = run_scored(world, o);
   ASSERT_TRUE(r.ok()) << r.error().message;
   EXPECT_EQ(r->row.cells, 25);
   EXPECT_EQ(r->row.free_reachable, 9);
@@ -264,7 +285,7 @@ TEST(BobMission, CountsCellsAndBoundaryEdgesOfAClosedRoom) {
 TEST(BobMission, RefusesAWorldLargerThanTheBuffers) {
   const GridGeometry g({0.0, 0.0}, kCellM, 65, 64);
   const World world(g, std::vector<std::uint8_t>(g.size(), 0), "big");
-  const Result<BobResult> r = run_bob(world, {});
+  const Result<ScoredRun> r = run_scored(world, {});
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().kind, ErrorKind::kInput);
   EXPECT_EQ(r.error().message,
@@ -275,12 +296,12 @@ TEST(BobMission, RefusesAStartFacingAWall) {
   const World world = text_world({"#####", "#.#.#", "#...#", "#####"});
   BobMissionOptions o;
   o.start = Cell{2, 1};
-  const Result<BobResult> r = run_bob(world, o);
+  const Result<ScoredRun> r = run_scored(world, o);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().kind, ErrorKind::kInput);
   EXPECT_EQ(r.error().message, "start (2, 1): the cell in front must be free (BOBMapping 3.4)");
   o.start = Cell{0, 0};
-  const Result<BobResult> solid = run_bob(world, o);
+  const Result<ScoredRun> solid = run_scored(world, o);
   ASSERT_FALSE(solid.ok());
   EXPECT_THAT(solid.error().message, HasSubstr("inside an obstacle"));
 }
@@ -289,10 +310,99 @@ TEST(BobMission, RefusesACellSmallerThanTheRobot) {
   const World world = text_world(worlds()[0], nullptr, 0.1);
   BobMissionOptions o;
   o.cell_m = 0.1;
-  const Result<BobResult> r = run_bob(world, o);
+  const Result<ScoredRun> r = run_scored(world, o);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().kind, ErrorKind::kInput);
   EXPECT_EQ(r.error().message, "cell 0.1 m does not fit the robot (0.16 x 0.15 m)");
+}
+
+// The step machine: BobMission::create, step() until finished(), then result() is run_bob's run,
+// with noise (fixes, repositionings and bumps happen) and in both variants.
+TEST(BobMission, SteppingToTheEndGivesTheRunToEndResult) {
+  Cell start;
+  const World world = text_world(worlds()[2], &start);
+  for (const BobVariant v : {BobVariant::kTrail, BobVariant::kMapAware}) {
+    SCOPED_TRACE(bob_variant_name(v));
+    BobMissionOptions o;
+    o.variant = v;
+    o.seed = 3;
+    const Result<BobResult> whole = run_bob(world, o);
+    ASSERT_TRUE(whole.ok()) << whole.error().message;
+    const Result<World> truth = bob_grid_truth(world, o);
+    ASSERT_TRUE(truth.ok());
+    const std::unique_ptr<BobExplorerPort> explorer = local_bob_explorer();
+    Result<BobMission> m = BobMission::create(world, *truth, o, *explorer);
+    ASSERT_TRUE(m.ok()) << m.error().message;
+    int steps = 0;
+    while (!m->finished()) {
+      ASSERT_TRUE(m->step().ok());
+      ++steps;
+    }
+    const Result<BobResult> r = m->result();
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    EXPECT_EQ(r->route, whole->route);
+    EXPECT_EQ(r->final_map, whole->final_map);
+    EXPECT_EQ(r->sensed, whole->sensed);
+    EXPECT_EQ(r->occupied, whole->occupied);
+    EXPECT_EQ(r->moves, whole->moves);
+    EXPECT_EQ(r->turns, whole->turns);
+    EXPECT_EQ(r->resensed, whole->resensed);
+    EXPECT_EQ(r->stop_reason, whole->stop_reason);
+    const BobLocalisationStats& a = r->localisation;
+    const BobLocalisationStats& b = whole->localisation;
+    EXPECT_EQ(a.fixes, b.fixes);
+    EXPECT_EQ(a.repositionings, b.repositionings);
+    EXPECT_EQ(a.bumps, b.bumps);
+    EXPECT_EQ(a.max_position_error_m, b.max_position_error_m);
+    EXPECT_EQ(a.mean_fix_error_m, b.mean_fix_error_m);
+    EXPECT_GT(a.fixes, 0);
+    // Each step is one move or one bump; the last call finds the explorer finished.
+    EXPECT_EQ(steps, static_cast<int>(r->route.size()) - 1 + a.bumps + 1);
+    EXPECT_TRUE(m->step().ok());  // finished: nothing happens
+    EXPECT_EQ(m->route(), whole->route);
+  }
+}
+
+// Mid-run, the route, the body and the monitor's snapshot tell the same story. Noise off: the
+// body stands exactly at the centre of the route's last cell after every step (a bump drives it
+// back there).
+TEST(BobMission, AccessorsAgreeWithEachOtherMidRun) {
+  Cell start;
+  const World world = text_world(worlds()[1], &start);
+  BobMissionOptions o;
+  o.noise = false;
+  o.start = start;
+  const Result<World> truth = bob_grid_truth(world, o);
+  ASSERT_TRUE(truth.ok());
+  const std::unique_ptr<BobExplorerPort> explorer = local_bob_explorer();
+  Result<BobMission> m = BobMission::create(world, *truth, o, *explorer);
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  EXPECT_EQ(m->start(), start);
+  EXPECT_EQ(m->route(), std::vector<Cell>{start});
+  std::size_t sensed_before = 0;
+  while (!m->finished()) {
+    const std::size_t before = m->route().size();
+    ASSERT_TRUE(m->step().ok());
+    if (m->finished()) break;
+    const std::vector<Cell>& route = m->route();
+    ASSERT_LE(route.size(), before + 1);
+    if (route.size() == before + 1) {
+      EXPECT_EQ(manhattan(route[before - 1], route.back()), 1);
+      EXPECT_TRUE(world.free(route.back()));
+    }
+    const Vec2 centre = m->grid().center_of(route.back());
+    EXPECT_NEAR((m->true_pose().translation() - centre).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((m->believed_pose().translation() - centre).norm(), 0.0, 1e-9);
+    const Result<BobResult> view = m->snapshot();
+    ASSERT_TRUE(view.ok());
+    EXPECT_EQ(view->route, route);
+    ASSERT_EQ(view->sensed.size(), m->grid().size());
+    const auto sensed = static_cast<std::size_t>(
+        std::count(view->sensed.begin(), view->sensed.end(), std::uint8_t{1}));
+    EXPECT_GE(sensed, sensed_before);  // a sensed cell stays sensed
+    sensed_before = sensed;
+  }
+  EXPECT_EQ(m->localisation().repositionings, 0);  // noise off: every fix agrees
 }
 
 }  // namespace

@@ -91,6 +91,7 @@ ExplorationMissionOptions options_for(FrontierStrategy strategy, int robots, Rob
   o.sensor = sensor;
   o.seed = 7;
   o.lidar.range_noise_stddev_m = 0.0;
+  o.free_margin_from_noise = false;
   o.scan_insert.free_margin_m = 0.0;
   return o;
 }
@@ -98,6 +99,31 @@ ExplorationMissionOptions options_for(FrontierStrategy strategy, int robots, Rob
 std::string describe(const ExplorationMissionOptions& o) {
   return std::string(to_string(o.strategy)) + ", " + std::to_string(o.robots) + " robot(s), " +
          (o.sensor == RobotKind::kCell ? "cell" : "lidar");
+}
+
+/// Bit-identical maps: the same known cells with the same log-odds.
+void expect_same_map(const OccupancyGrid& a, const OccupancyGrid& b) {
+  const GridGeometry& g = a.geometry();
+  ASSERT_EQ(g.size(), b.geometry().size());
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const Cell c = g.cell_of(i);
+    ASSERT_EQ(a.known(c), b.known(c)) << to_string(c);
+    ASSERT_EQ(a.log_odds_at(c), b.log_odds_at(c)) << to_string(c);
+  }
+}
+
+/// Bit-identical paths, pose by pose.
+void expect_same_paths(const std::vector<std::vector<Pose2>>& a,
+                       const std::vector<std::vector<Pose2>>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t r = 0; r < a.size(); ++r) {
+    ASSERT_EQ(a[r].size(), b[r].size()) << "robot " << r;
+    for (std::size_t k = 0; k < a[r].size(); ++k) {
+      EXPECT_EQ(a[r][k].x, b[r][k].x);
+      EXPECT_EQ(a[r][k].y, b[r][k].y);
+      EXPECT_EQ(a[r][k].theta, b[r][k].theta);
+    }
+  }
 }
 
 void expect_complete(const World& world, const ExplorationMissionOptions& o) {
@@ -165,21 +191,8 @@ TEST(ExplorationMission, SameSeedGivesTheSameRun) {
   const Result<ExplorationResult> a = run_exploration(world, o);
   const Result<ExplorationResult> b = run_exploration(world, o);
   ASSERT_TRUE(a.ok() && b.ok());
-  ASSERT_EQ(a->paths.size(), b->paths.size());
-  for (std::size_t r = 0; r < a->paths.size(); ++r) {
-    ASSERT_EQ(a->paths[r].size(), b->paths[r].size());
-    for (std::size_t k = 0; k < a->paths[r].size(); ++k) {
-      EXPECT_EQ(a->paths[r][k].x, b->paths[r][k].x);
-      EXPECT_EQ(a->paths[r][k].y, b->paths[r][k].y);
-      EXPECT_EQ(a->paths[r][k].theta, b->paths[r][k].theta);
-    }
-  }
-  const GridGeometry& g = world.geometry();
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    const Cell c = g.cell_of(i);
-    ASSERT_EQ(a->map.known(c), b->map.known(c));
-    ASSERT_EQ(a->map.log_odds_at(c), b->map.log_odds_at(c));
-  }
+  expect_same_paths(a->paths, b->paths);
+  expect_same_map(a->map, b->map);
   EXPECT_EQ(a->metrics.steps, b->metrics.steps);
   EXPECT_EQ(a->metrics.turns, b->metrics.turns);
   EXPECT_EQ(a->frontier_left, b->frontier_left);
@@ -302,13 +315,109 @@ TEST(ExplorationMission, InvalidOptionsAreUsageErrors) {
 TEST(ExplorationMission, ProgressIsOptionalAndDoesNotChangeTheRun) {
   const World world = labyrinth();
   const ExplorationMissionOptions o = options_for(FrontierStrategy::kNearest, 1, RobotKind::kCell);
-  int calls = 0;
   const Result<ExplorationResult> a =
-      run_exploration(world, o, [&](const ExplorationProgress&) { ++calls; });
+      run_exploration(world, o, [](const ExplorationProgress& p) { EXPECT_GE(p.step, 1); });
   const Result<ExplorationResult> b = run_exploration(world, o);
   ASSERT_TRUE(a.ok() && b.ok());
   EXPECT_EQ(a->metrics.steps, b->metrics.steps);
-  EXPECT_GE(calls, 0);
+  expect_same_map(a->map, b->map);
+  expect_same_paths(a->paths, b->paths);
+  EXPECT_EQ(a->frontier_left, b->frontier_left);
+}
+
+// The step machine: start_exploration, then step_exploration until the mission is finished, is
+// run_exploration, whatever the sensor and the team.
+TEST(ExplorationMission, SteppingToTheEndGivesTheRunToEndResult) {
+  const World world = rooms();
+  for (const RobotKind sensor : {RobotKind::kCell, RobotKind::kLidar}) {
+    for (const int robots : {1, 3}) {
+      ExplorationMissionOptions o = options_for(FrontierStrategy::kPriority, robots, sensor);
+      o.lidar.range_noise_stddev_m = 0.01;
+      o.free_margin_from_noise = true;
+      SCOPED_TRACE(describe(o));
+      const Result<ExplorationResult> whole = run_exploration(world, o);
+      Result<SimulatedExploration> run = start_exploration(world, o);
+      ASSERT_TRUE(whole.ok() && run.ok());
+      std::int64_t calls = 0;
+      while (!run->mission.finished()) {
+        step_exploration(*run);
+        ++calls;
+      }
+      const ExplorationMission& m = run->mission;
+      EXPECT_EQ(calls, m.steps() + 1);  // the last call finds nothing left to do
+      EXPECT_EQ(m.steps(), whole->metrics.steps);
+      EXPECT_EQ(std::string(m.stop_reason()), whole->metrics.stop_reason);
+      EXPECT_EQ(m.moves(), whole->metrics.path_length_cells);
+      EXPECT_EQ(m.turns(), whole->metrics.turns);
+      EXPECT_EQ(m.distance_m(), whole->metrics.path_length_m);
+      EXPECT_EQ(m.frontier().cells(), whole->frontier_left);
+      EXPECT_EQ(m.blacklisted_targets(), whole->blacklisted_targets);
+      expect_same_map(m.map(), whole->map);
+      expect_same_paths(m.paths(), whole->paths);
+      // Once finished, a step changes nothing.
+      step_exploration(*run);
+      EXPECT_EQ(m.steps(), whole->metrics.steps);
+      EXPECT_TRUE(run->mission.decide().empty());
+    }
+  }
+}
+
+TEST(ExplorationMission, AccessorsAgreeWithEachOtherMidRun) {
+  const World world = rooms();
+  const ExplorationMissionOptions o = options_for(FrontierStrategy::kNearest, 2, RobotKind::kCell);
+  Result<SimulatedExploration> run = start_exploration(world, o);
+  ASSERT_TRUE(run.ok());
+  const ExplorationMission& m = run->mission;
+  const GridGeometry& g = world.geometry();
+  for (std::int64_t k = 1; k <= 40; ++k) {
+    step_exploration(*run);
+    ASSERT_FALSE(m.finished());
+    EXPECT_EQ(m.steps(), k);
+    std::int64_t moves = 0;
+    for (int r = 0; r < m.robots(); ++r) {
+      const std::vector<Pose2>& path = m.paths()[static_cast<std::size_t>(r)];
+      moves += static_cast<std::int64_t>(path.size()) - 1;
+      EXPECT_LE(static_cast<std::int64_t>(path.size()), k + 1);
+      // The robot stands where its last reported pose is, in a cell the map holds free, and the
+      // simulator agrees.
+      EXPECT_EQ(g.cell_at_unchecked(path.back().translation()), m.cell(r));
+      EXPECT_EQ(m.cell(r), run->sim.cell(r));
+      EXPECT_TRUE(m.map().is_free_below(m.cell(r), log_odds(o.low)));
+    }
+    EXPECT_EQ(moves, m.moves());
+    EXPECT_NEAR(m.distance_m(), static_cast<double>(moves) * g.resolution_m(), 1e-9);
+    EXPECT_FALSE(m.changed_cells().empty());  // every step senses somewhere
+    for (const Cell c : m.frontier().unordered()) EXPECT_TRUE(m.map().known(c));
+  }
+}
+
+// The robots' side needs no world: readings and move outcomes made by hand drive it. A refused
+// move puts an obstacle in the map where the robot bumped, and the robot plans around it.
+TEST(ExplorationMission, ReadingsAndBumpsFromOutsideDriveTheRobotsSide) {
+  const GridGeometry g({0.0, 0.0}, 1.0, 5, 1);
+  ExplorationMissionOptions o;
+  ExplorationMission m(g, o, {Cell{2, 0}});
+  CellReading all_free;
+  all_free.center = Cell{2, 0};
+  for (std::size_t k = 0; k < 8; ++k) {
+    const Cell n = all_free.center + kNeighbors8[k];
+    all_free.inside_map[k] = g.contains(n);
+  }
+  m.sense(0, Pose2{2.5, 0.5, 0.0}, all_free);
+  EXPECT_TRUE(m.map().is_free_below(Cell{1, 0}, log_odds(o.low)));
+  EXPECT_TRUE(m.map().is_free_below(Cell{3, 0}, log_odds(o.low)));
+  const std::vector<ExplorationMove> first = m.decide();
+  ASSERT_EQ(first.size(), 1u);
+  const Cell bumped = first[0].to;
+  m.refused(0);
+  m.end_step();
+  EXPECT_EQ(m.refused_moves(), 1);
+  EXPECT_FALSE(m.map().is_free_below(bumped, log_odds(o.low)));
+  EXPECT_EQ(m.cell(0), (Cell{2, 0}));
+  const std::vector<ExplorationMove> second = m.decide();
+  ASSERT_EQ(second.size(), 1u);
+  EXPECT_NE(second[0].to, bumped);
+  EXPECT_EQ(manhattan(second[0].to, (Cell{2, 0})), 1);
 }
 
 }  // namespace

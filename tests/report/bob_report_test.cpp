@@ -5,18 +5,23 @@
 namespace tessera {
 namespace {
 
-BobResult scored_run() {
+BobResult finished_run() {
   BobResult r;
   r.width = 3;
   r.height = 2;
-  r.row.cells = 6;
-  r.row.empty_as_occupied = 1;
-  r.row.occupied_as_empty = 2;
-  r.row.success_rate = 0.5;
-  r.row.path_cells = 9;
-  r.row.free_reachable = 4;
   r.stop_reason = bob::StopReason::kBackAtStart;
   return r;
+}
+
+BobTableRow table_row() {
+  BobTableRow row;
+  row.cells = 6;
+  row.empty_as_occupied = 1;
+  row.occupied_as_empty = 2;
+  row.success_rate = 0.5;
+  row.path_cells = 9;
+  row.free_reachable = 4;
+  return row;
 }
 
 TEST(BobReport, PutsTableOneUnderMapAccuracyWithDesignKeysAndTheRowBesideThem) {
@@ -25,7 +30,7 @@ TEST(BobReport, PutsTableOneUnderMapAccuracyWithDesignKeysAndTheRowBesideThem) {
   context.world_file = "builtin:labyrinth";
   context.world_resolution_m = 0.05;
   context.variant = "trail";
-  const nlohmann::json j = bob_report(scored_run(), context);
+  const nlohmann::json j = bob_report(finished_run(), table_row(), context);
   const nlohmann::json& a = j["map_accuracy"];
   EXPECT_EQ(a["cells_compared"], 6);
   EXPECT_EQ(a["correct"], 3);  // 6 cells - 1 - 2 errors

@@ -1,8 +1,8 @@
 #pragma once
-// A simulated BOBMapping run (BOBMapping sections 3.1-3.4, Table 1): the freestanding explorer of
-// bob/ driven by a simulated robot on a ground-truth World of any resolution, under a grid of
-// robot-sized cells laid over it from the world's origin. The loop `tessera bob` runs, kept in the
-// library so the app stays thin.
+// A simulated BOBMapping run (BOBMapping sections 3.1-3.4): the freestanding explorer of bob/
+// driven by a simulated robot on a ground-truth World of any resolution, under a grid of
+// robot-sized cells laid over it from the world's origin. The run `tessera bob` makes, kept in the
+// library so the app stays thin; its Table 1 scoring is eval's (eval/bob_table.hpp).
 //
 // What it models:
 //  - Ground truth per robot cell: occupied when any solid cell of the world overlaps it
@@ -29,6 +29,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,7 @@
 #include "tessera/bob/explorer.hpp"
 #include "tessera/sim/bob_explorer_port.hpp"
 #include "tessera/core/cell.hpp"
+#include "tessera/core/pose2.hpp"
 #include "tessera/core/result.hpp"
 #include "tessera/sensors/beacon_trilateration.hpp"
 #include "tessera/sensors/wheel_encoders.hpp"
@@ -77,8 +79,9 @@ struct BobMissionOptions {
   /// no figure): above the 3.5 cm mean error of a fix, so that a good fix seldom triggers it.
   double reposition_threshold_m = 0.05;
   int max_step_attempts = 4;  // a step is repeated at most this many times in all
-  /// Table 1 scoring band (BobTableRow): an obstacle this close to a cell edge may be mapped in
-  /// either cell without counting as an error. Below the beacons' 3.5 cm mean error.
+  /// Edge band: a reflector this close to a cell edge may be placed in either cell when sensing
+  /// (BobSensingOptions::edge_tolerance_m), and Table 1's band scoring forgives it
+  /// (eval/bob_table.hpp). Below the beacons' 3.5 cm mean error.
   double boundary_tolerance_m = 0.03;
   /// The robot's grid covers only this rectangle {lo, hi} of the world, metres (snapped outwards
   /// to the world's cells, as World::cropped does); the world outside it is still there for the
@@ -94,38 +97,9 @@ struct BobMissionOptions {
   double robot_length_m = 0.16;
   double robot_width_m = 0.15;
   int samples_per_move = 12;
-  /// Called with the run so far at the start and after every step (a move or a bump): route,
-  /// size, start, final_map and sensed from the explorer's maps (BobExplorerPort::snapshot); row
-  /// and localisation are left empty. For a monitor (io/bob_monitor.hpp); unset: not called.
+  /// Called by run_bob with the run so far at the start and after every step (a move or a bump):
+  /// BobMission::snapshot(). For a monitor (io/bob_monitor.hpp); unset: not called.
   std::function<void(const BobResult&)> on_step;
-};
-
-/// BOBMapping Table 1 for one configuration, plus the comparison with the SmartDFS bound.
-struct BobTableRow {
-  int cells = 0;         // cells in the configuration: every cell of the grid (W x H)
-  int sensed_cells = 0;  // cells sensed at least once
-  int resensed = 0;      // readings that changed an already sensed cell
-  int ignored_readings = 0;  // readings of sensed cells ignored with re-sensing off
-  // Errors over sensed cells of the final map (BobResult::final_map: a visited cell with an
-  // obstacle detected inside counts as occupied), scored with a don't-care band of
-  // boundary_tolerance_m either side of each cell edge (the robot knows its grid only to its
-  // localisation error):
-  int empty_as_occupied = 0;  // map occupied, but nothing solid even in the cell grown by the band
-  int occupied_as_empty = 0;  // map free, but something solid in the cell shrunk by the band
-  double success_rate = 0.0;  // (cells - both errors) / cells, as the paper computes it
-  // The same against the cell's own edges (any solid overlap makes a cell occupied):
-  int empty_as_occupied_strict = 0;
-  int occupied_as_empty_strict = 0;
-  double success_rate_strict = 0.0;
-  int path_cells = 0;              // one-cell moves ("length path")
-  int turns = 0;                   // heading changes, each counts one whatever its angle
-  int visited_cells = 0;           // distinct cells stood in
-  double path_share = 0.0;         // path_cells / cells (the paper's "68% of the cells")
-  double visited_share = 0.0;      // visited_cells / cells
-  int free_reachable = 0;          // C: free cells 4-connected to the start
-  int boundary_edges = 0;          // E: edges between a C cell and a non-C cell (or the outside)
-  double path_per_c = 0.0;         // path_cells / C
-  double path_per_smartdfs = 0.0;  // path_cells / (C + E/2 - 3), Icking et al. 2005
 };
 
 /// How the localisation of 3.3 went.
@@ -147,31 +121,96 @@ struct BobResult {
   int width = 0;            // the robot's grid
   int height = 0;
   /// bob::FinalMap layout: 1 = occupied, unsensed, or stood in with an obstacle detected inside
-  /// (decision 0008). The Table 1 errors are counted on this map.
+  /// (decision 0008). The Table 1 errors are counted on this map (eval/bob_table.hpp).
   std::vector<std::uint8_t> final_map;
-  std::vector<std::uint8_t> sensed;     // one byte per cell, row-major: 1 = sensed
-  BobTableRow row;
+  std::vector<std::uint8_t> sensed;    // one byte per cell, row-major: 1 = sensed
+  std::vector<std::uint8_t> occupied;  // one byte per cell, row-major: final_map's bit of the cell
+  // The explorer's counters (bob::Explorer): one-cell moves, heading changes, readings that
+  // changed a sensed cell, readings ignored with re-sensing off.
+  int moves = 0;
+  int turns = 0;
+  int resensed = 0;
+  int ignored_readings = 0;
   BobLocalisationStats localisation;
   bob::StopReason stop_reason = bob::StopReason::kNone;
   Cell start;
 };
 
-/// Runs the explorer until it stops. Deterministic for a given seed.
-///
-/// Errors (kInput): "world is W x H = N cells, more than the robot's buffers hold (4096)" (cells of
-/// the robot's grid);
-/// "cell 0.1 m does not fit the robot (0.16 x 0.15 m)"; "start (x, y) is outside the map" /
-/// "is inside an obstacle"; "start (x, y): the cell in front must be free (BOBMapping 3.4)"; no
-/// start cell with a free North neighbour. kRuntime: the robot drove into an obstacle or the
-/// explorer did not stop within 64 moves per cell (a bug).
-/// Cost: O(moves) with kTrail, O(moves * cells) with kMapAware.
-[[nodiscard]] Result<BobResult> run_bob(const World& world, const BobMissionOptions& options);
+/// The robot's grid laid over `world` (or over options.grid_rect_m of it) from its origin, and the
+/// ground truth of each of its cells: occupied when any solid cell of `world` overlaps it
+/// (World::resampled's rule; a cell reaching past the rectangle looks at the world there, not at
+/// the rectangle's edge). Computed once per run: BobMission and eval/bob_table.hpp take it.
+/// kUsage: cell_m <= 0. Cost: O(cells of world).
+[[nodiscard]] Result<World> bob_grid_truth(const World& world, const BobMissionOptions& options);
 
-/// The same with the explorer behind `explorer` (the firmware across a serial link, for one):
-/// run_bob(world, options) is this with a bob::Explorer in this process. The explorer's answers
-/// decide the run; a link error stops it (its Error). Deterministic for a given seed when the
-/// explorer is.
-[[nodiscard]] Result<BobResult> run_bob(const World& world, const BobMissionOptions& options,
+/// A simulated BOBMapping run as a step machine: the simulator's side (the fine world, the
+/// robot's body, its sensors and beacons, BOBMapping 3.3-3.4's localisation protocol) around the
+/// robot's side, the explorer behind `BobExplorerPort` (bob::Explorer in this process, or the
+/// firmware across a serial link). step() is one move of the explorer; the accessors show the run
+/// so far. Decision 0015.
+class BobMission {
+ public:
+  /// Places the robot by hand in its start cell (options.start or the default, see
+  /// BobMissionOptions::start), facing North, and lets it sense the cells around it; the explorer
+  /// starts there. `world`, `grid_truth` (bob_grid_truth(world, options)) and `explorer` must
+  /// outlive the mission.
+  ///
+  /// Errors (kInput): "world is W x H = N cells, more than the robot's buffers hold (4096)" (cells
+  /// of the robot's grid); "cell 0.1 m does not fit the robot (0.16 x 0.15 m)"; "start (x, y) is
+  /// outside the map" / "is inside an obstacle"; "start (x, y): the cell in front must be free
+  /// (BOBMapping 3.4)"; no start cell with a free North neighbour. kUsage: bad sensing, encoder or
+  /// beacon options. The explorer link's errors.
+  [[nodiscard]] static Result<BobMission> create(const World& world, const World& grid_truth,
+                                                 const BobMissionOptions& options,
+                                                 BobExplorerPort& explorer);
+  BobMission(BobMission&&) noexcept;
+  BobMission& operator=(BobMission&&) noexcept;
+  ~BobMission();
+
+  /// One move of the explorer: its next move, carried out by the body (turn, drive, sense while
+  /// moving; a beacon fix after two linear moves or after the linear move that follows a turn,
+  /// the step repeated when the fix disagrees with odometry), or a bump (the body met an obstacle:
+  /// back to the cell it left, the explorer told). The call that finds the explorer finished sets
+  /// finished() and moves nothing. Does nothing once finished().
+  /// Errors: kRuntime when the explorer did not stop within 64 moves per cell or answered with an
+  /// error status (a bug); the explorer link's errors. Cost: O(1) with kTrail, O(cells) with
+  /// kMapAware (the explorer's search), plus the body's collision checks.
+  [[nodiscard]] Status step();
+
+  [[nodiscard]] bool finished() const;
+  [[nodiscard]] const GridGeometry& grid() const;
+  [[nodiscard]] Cell start() const;
+  /// Cells stood in, start first, one per move.
+  [[nodiscard]] const std::vector<Cell>& route() const;
+  /// The localisation figures so far (mean_fix_error_m included).
+  [[nodiscard]] BobLocalisationStats localisation() const;
+  [[nodiscard]] Pose2 true_pose() const;
+  [[nodiscard]] Pose2 believed_pose() const;
+  /// The run so far as a monitor shows it: route, size, start, final_map, sensed and occupied from
+  /// the explorer's maps (BobExplorerPort::snapshot); counters and localisation left empty.
+  [[nodiscard]] Result<BobResult> snapshot();
+  /// The run once finished(): the explorer's summary and maps, the route and the localisation.
+  /// kRuntime when the explorer's maps have the wrong size (a link fault).
+  [[nodiscard]] Result<BobResult> result();
+
+ private:
+  struct State;
+  explicit BobMission(std::unique_ptr<State> state);
+  std::unique_ptr<State> s_;
+};
+
+/// bob::Explorer in this process, in fixed buffers as on the microcontroller.
+[[nodiscard]] std::unique_ptr<BobExplorerPort> local_bob_explorer();
+
+/// Runs the mission to the end: create, then step() until finished(), options.on_step after the
+/// start and after every step that moved or bumped; then result(). Deterministic for a given seed
+/// when the explorer is. Errors: those of BobMission::create and step().
+/// Cost: O(moves) with kTrail, O(moves * cells) with kMapAware.
+[[nodiscard]] Result<BobResult> run_bob(const World& world, const World& grid_truth,
+                                        const BobMissionOptions& options,
                                         BobExplorerPort& explorer);
+
+/// The same with bob_grid_truth(world, options) and local_bob_explorer().
+[[nodiscard]] Result<BobResult> run_bob(const World& world, const BobMissionOptions& options);
 
 }  // namespace tessera

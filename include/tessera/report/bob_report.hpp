@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tessera/eval/bob_table.hpp"
 #include "tessera/mission/bob_mission.hpp"
 #include "tessera/report/core_report.hpp"
 
@@ -28,6 +29,8 @@ struct BobReportContext {
 /// paper counts them, and correct = cells - both errors.
 [[nodiscard]] nlohmann::json bob_map_accuracy_json(const BobTableRow& row);
 
-[[nodiscard]] nlohmann::json bob_report(const BobResult& result, const BobReportContext& context);
+/// `row`: the run scored against its grid truth (eval/bob_table.hpp score_bob_table).
+[[nodiscard]] nlohmann::json bob_report(const BobResult& result, const BobTableRow& row,
+                                        const BobReportContext& context);
 
 }  // namespace tessera

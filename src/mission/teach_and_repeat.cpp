@@ -406,7 +406,7 @@ Status TeachAndRepeat::navigate() {
   for (;;) {
     if (!follower || seen_corrections != x.corrections) {
       seen_corrections = x.corrections;
-      const CellGraph graph = slam.map().graph(CellAdjacency::kTraversed);
+      const CellGraph graph = slam.map().graph(fusion::CellAdjacency::kTraversed);
       const WavefrontField field = wavefront(graph, run_.goal_cell);
       const Pose2 p = slam.estimate();
       const std::vector<std::size_t> cell_path =

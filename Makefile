@@ -1,11 +1,12 @@
 # tessera: `make demo` and `make test` do all the set-up on a fresh Debian 12 machine.
-# With CI=true, `make test` builds with warnings as errors, runs the suite, then builds and runs it
-# once more under AddressSanitizer and UndefinedBehaviorSanitizer.
+# With CI=true, `make test` builds once with warnings as errors under AddressSanitizer and
+# UndefinedBehaviorSanitizer and runs the suite there (docs/decisions/0018-one-ci-build.md), then
+# the firmware on QEMU and a short fuzzing smoke.
 JOBS ?= $(shell nproc)
 DEMO_OUT ?= out/demo
 TESSERA := build/dev/apps/tessera/tessera
 
-.PHONY: all deps configure build cli demo test test-dev test-ci test-sanitize bench clean
+.PHONY: all deps configure build cli demo test test-dev test-ci bench clean
 .PHONY: fuzz-build fuzz fuzz-smoke kill-test
 
 all: build
@@ -27,7 +28,7 @@ demo: cli
 	$(TESSERA) explore --out $(DEMO_OUT)
 
 ifeq ($(CI),true)
-test: test-ci test-sanitize bob-firmware bob-firmware-test fuzz-smoke
+test: test-ci bob-firmware bob-firmware-test fuzz-smoke
 else
 test: test-dev
 endif
@@ -38,13 +39,8 @@ test-dev: build
 test-ci: deps
 	cmake --preset ci
 	cmake --build --preset ci -j $(JOBS)
-	ctest --test-dir build/ci --output-on-failure -j $(JOBS)
-
-test-sanitize: deps
-	cmake --preset asan-ubsan
-	cmake --build --preset asan-ubsan -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest --test-dir build/asan-ubsan --output-on-failure -j $(JOBS)
+	  ctest --test-dir build/ci --output-on-failure -j $(JOBS)
 
 bench: build
 	build/dev/bench/explore/explore_bench

@@ -11,6 +11,20 @@ constexpr double kResolutionM = 0.5;
 // Plans whose grid would be larger than this are only parsed: rasterising up to kMaxCells cells
 // (2^28) is legitimate but would take the fuzzer seconds and gigabytes per input.
 constexpr double kMaxFuzzCells = 1e6;
+// The same for the scanline work, the rows each edge spans summed over the edges: a zigzag of a
+// thousand edges each crossing a million rows is a legitimate plan that takes seconds to fill.
+constexpr double kMaxFuzzEdgeRows = 2e7;
+
+double edge_rows(const tessera::PolygonMap& plan) {
+  double rows = 0.0;
+  for (const tessera::Polygon& polygon : plan.polygons()) {
+    const std::vector<tessera::Vec2>& v = polygon.vertices;
+    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
+      rows += std::fabs(v[i].y - v[j].y) / kResolutionM + 1.0;
+    }
+  }
+  return rows;
+}
 
 tessera::Status read(std::string_view bytes, const std::filesystem::path& path) {
   tessera::Result<tessera::PolygonMap> plan =
@@ -18,8 +32,8 @@ tessera::Status read(std::string_view bytes, const std::filesystem::path& path) 
   if (!plan) return plan.error();
   const auto [lo, hi] = plan->bounds();
   const double cells = ((hi.x - lo.x) / kResolutionM + 3.0) * ((hi.y - lo.y) / kResolutionM + 3.0);
-  if (cells > kMaxFuzzCells &&
-      cells <= static_cast<double>(tessera::io_internal::kMaxCells) * 1.01) {
+  const bool too_large = cells > static_cast<double>(tessera::io_internal::kMaxCells) * 1.01;
+  if (!too_large && (cells > kMaxFuzzCells || edge_rows(*plan) > kMaxFuzzEdgeRows)) {
     return tessera::Ok{};
   }
   return tessera::fuzz::status_of(

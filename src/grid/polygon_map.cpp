@@ -136,15 +136,34 @@ OccupancyGrid PolygonMap::rasterize(const GridGeometry& geometry) const {
     }
 
     // The other cells are wholly inside or wholly outside: decide by the centre, one scanline per
-    // row (even-odd crossings of the row's centre line, sorted).
+    // row (even-odd crossings of the row's centre line, sorted). An edge crosses the centre line
+    // yc when yc is in [min y, max y) of its ends; the edges are walked as an active-edge table
+    // sorted by min y, so a row costs the edges it crosses, not all of them (a tall plan of many
+    // vertices was rows x vertices).
+    struct Edge {
+      Vec2 a, b;
+      double y_min, y_max;
+    };
+    std::vector<Edge> edges;
+    edges.reserve(v.size());
+    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
+      if (v[i].y == v[j].y) continue;  // horizontal: never straddles a centre line
+      edges.push_back({v[i], v[j], std::min(v[i].y, v[j].y), std::max(v[i].y, v[j].y)});
+    }
+    std::sort(edges.begin(), edges.end(),
+              [](const Edge& e, const Edge& f) { return e.y_min < f.y_min; });
+    std::vector<const Edge*> active;
+    std::size_t next_edge = 0;
     std::vector<double> crossings;
     for (int y = y0; y <= y1; ++y) {
       const double yc = origin.y + (y + 0.5) * res;
+      while (next_edge < edges.size() && edges[next_edge].y_min <= yc) {
+        active.push_back(&edges[next_edge++]);
+      }
+      std::erase_if(active, [yc](const Edge* e) { return e->y_max <= yc; });
       crossings.clear();
-      for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
-        if ((v[i].y > yc) != (v[j].y > yc)) {
-          crossings.push_back(v[i].x + (v[j].x - v[i].x) * (yc - v[i].y) / (v[j].y - v[i].y));
-        }
+      for (const Edge* e : active) {
+        crossings.push_back(e->a.x + (e->b.x - e->a.x) * (yc - e->a.y) / (e->b.y - e->a.y));
       }
       std::sort(crossings.begin(), crossings.end());
       std::size_t k = 0;

@@ -202,37 +202,64 @@ double clipped_area(std::vector<Vec2> poly, Vec2 lo, Vec2 hi) {
   return std::fabs(0.5 * twice);
 }
 
+// Every cell of `v` rasterised on `geometry` is occupied when it must be and free when it must be,
+// judged by the exact overlap area (cells within rounding of the decision are skipped).
+void expect_rasterize_matches_overlap_area(const std::vector<Vec2>& v,
+                                           const GridGeometry& geometry, int trial) {
+  const double res = geometry.resolution_m();
+  const double cell_area = res * res;
+  for (const PolygonMap::Meaning meaning :
+       {PolygonMap::Meaning::kObstacles, PolygonMap::Meaning::kFreeSpace}) {
+    PolygonMap map(meaning);
+    map.add(Polygon{v});
+    const OccupancyGrid grid = map.rasterize(geometry);
+    for (std::size_t i = 0; i < geometry.size(); ++i) {
+      const Cell c = geometry.cell_of(i);
+      const Vec2 lo{geometry.origin().x + res * c.x, geometry.origin().y + res * c.y};
+      const double area = clipped_area(v, lo, lo + Vec2{res, res});
+      const bool occupied = grid.state(c) == CellState::kOccupied;
+      const bool must_be_occupied =
+          meaning == PolygonMap::Meaning::kObstacles ? area > 1e-9 : area < cell_area - 1e-9;
+      const bool must_be_free =
+          meaning == PolygonMap::Meaning::kObstacles ? area < 1e-12 : area > cell_area - 1e-12;
+      if (must_be_occupied) {
+        EXPECT_TRUE(occupied) << "trial " << trial << " cell " << c.x << "," << c.y;
+      }
+      if (must_be_free) {
+        EXPECT_FALSE(occupied) << "trial " << trial << " cell " << c.x << "," << c.y;
+      }
+    }
+  }
+}
+
+// Many-edged, non-convex plans exercise the scanline's active-edge table: star polygons (random
+// radii at sorted angles, so always simple) with up to 40 corners, some rows crossing many edges.
+TEST(PolygonMap, RasterizeMatchesExactOverlapAreaOnRandomStarPolygons) {
+  Rng rng(7);
+  const GridGeometry geometry({-4.0, -4.0}, 0.5, 16, 16);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int corners = 5 + trial % 36;
+    std::vector<double> angles;
+    for (int k = 0; k < corners; ++k) angles.push_back(rng.uniform(0.0, 2.0 * M_PI));
+    std::sort(angles.begin(), angles.end());
+    std::vector<Vec2> v;
+    for (const double a : angles) {
+      const double r = rng.uniform(0.3, 3.9);
+      v.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    expect_rasterize_matches_overlap_area(v, geometry, trial);
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
 TEST(PolygonMap, RasterizeMatchesExactOverlapAreaOnRandomTriangles) {
   Rng rng(31);
   const GridGeometry geometry({-1.0, -1.0}, 0.5, 14, 14);
-  const double cell_area = 0.25;
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<Vec2> v;
     for (int k = 0; k < 3; ++k) v.push_back({rng.uniform(-2.0, 7.0), rng.uniform(-2.0, 7.0)});
-    for (const PolygonMap::Meaning meaning :
-         {PolygonMap::Meaning::kObstacles, PolygonMap::Meaning::kFreeSpace}) {
-      PolygonMap map(meaning);
-      map.add(Polygon{v});
-      const OccupancyGrid grid = map.rasterize(geometry);
-      for (std::size_t i = 0; i < geometry.size(); ++i) {
-        const Cell c = geometry.cell_of(i);
-        const Vec2 lo{-1.0 + 0.5 * c.x, -1.0 + 0.5 * c.y};
-        const double area = clipped_area(v, lo, lo + Vec2{0.5, 0.5});
-        const bool occupied = grid.state(c) == CellState::kOccupied;
-        // Skip cells within rounding of the decision (a sliver or an almost-full cell).
-        const bool must_be_occupied =
-            meaning == PolygonMap::Meaning::kObstacles ? area > 1e-9 : area < cell_area - 1e-9;
-        const bool must_be_free =
-            meaning == PolygonMap::Meaning::kObstacles ? area < 1e-12 : area > cell_area - 1e-12;
-        if (must_be_occupied) {
-          EXPECT_TRUE(occupied) << "trial " << trial << " area " << area;
-        }
-        if (must_be_free) {
-          EXPECT_FALSE(occupied) << "trial " << trial << " area " << area;
-        }
-      }
-      if (::testing::Test::HasFailure()) return;
-    }
+    expect_rasterize_matches_overlap_area(v, geometry, trial);
+    if (::testing::Test::HasFailure()) return;
   }
 }
 

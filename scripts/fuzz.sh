@@ -2,9 +2,9 @@
 # Runs the libFuzzer harnesses of the readers (fuzz/, built by the `fuzz` preset).
 #   scripts/fuzz.sh SECONDS JOBS [FORMAT ...]
 # Each harness runs SECONDS seconds, JOBS harnesses at a time, on its corpus build/fuzz/corpus/
-# <format>/, which starts with the seed files named in fuzz/harnesses.cmake (the first 4 KB of
-# each, at most 12 files per glob; real data from TESSERA_DATA_DIR, default ../shared/data) and the
-# format's regression inputs (tests/fuzz/regressions/<format>/). Logs go to build/fuzz/logs/, inputs
+# <format>/, which starts with the seed files named in fuzz/harnesses.cmake (at most 12 files per
+# glob: fixtures whole, the first 4 KB of real data from TESSERA_DATA_DIR, default
+# ../shared/data) and the format's regression inputs (tests/fuzz/regressions/<format>/). Logs go to build/fuzz/logs/, inputs
 # that crash to build/fuzz/artifacts/<format>/. Prints one line per harness (executions per
 # second, corpus size, libFuzzer's cov and ft) and exits 1 when any harness found a problem.
 set -uo pipefail
@@ -33,7 +33,12 @@ seed_corpus() {
     n=0
     for f in "$dir"/$pattern; do
       [ -f "$f" ] || continue
-      head -c 4096 "$f" > "$corpus/seed-$(basename "$f")"
+      # Real files can be megabytes: their first 4 KB. Fixtures are small and whole (a ROS 1
+      # bag's header record alone is 4 KB).
+      case $spec in
+        data:*) head -c 4096 "$f" > "$corpus/seed-$(basename "$f")" ;;
+        *) cp "$f" "$corpus/seed-$(basename "$f")" ;;
+      esac
       n=$((n + 1))
       [ $n -ge 12 ] && break
     done

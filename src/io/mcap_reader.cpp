@@ -215,11 +215,14 @@ class McapReader {
 Status read_mcap_file(const std::filesystem::path& path, BagBuilder& builder) {
   Result<std::string> bytes = read_file_bytes(path);
   if (!bytes) return bytes.error();
-  const std::string file = path.string();
-  if (!bytes->starts_with(kMagic)) return input_error(file + ": not an MCAP file (no magic)");
+  return decode_mcap(*bytes, path.string(), builder);
+}
+
+Status decode_mcap(std::string_view bytes, const std::string& file, BagBuilder& builder) {
+  if (!bytes.starts_with(kMagic)) return input_error(file + ": not an MCAP file (no magic)");
   McapReader reader(file, builder);
   bool footer = false;
-  const Bytes all = as_bytes(*bytes);
+  const Bytes all = as_bytes(bytes);
   if (Status s = reader.read_records(all.subspan(kMagic.size()), kMagic.size(), false, file + ": ",
                                      footer);
       !s) {

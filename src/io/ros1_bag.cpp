@@ -276,11 +276,14 @@ class Ros1BagReader {
 Status read_ros1_bag_file(const std::filesystem::path& path, BagBuilder& builder) {
   Result<std::string> bytes = read_file_bytes(path);
   if (!bytes) return bytes.error();
-  const std::string file = path.string();
-  if (!bytes->starts_with(kMagic)) {
+  return decode_ros1_bag(*bytes, path.string(), builder);
+}
+
+Status decode_ros1_bag(std::string_view bytes, const std::string& file, BagBuilder& builder) {
+  if (!bytes.starts_with(kMagic)) {
     return input_error(file + ": not a ROS bag 2.0 (expected '#ROSBAG V2.0')");
   }
-  const Bytes all = as_bytes(*bytes);
+  const Bytes all = as_bytes(bytes);
   Ros1BagReader reader(file, builder);
   RecordReader first(all.subspan(kMagic.size()), kMagic.size(), file + ": ");
   Result<Record> header = first.next();

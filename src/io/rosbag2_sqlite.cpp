@@ -4,9 +4,11 @@
 // and immutable (no journal, no locks), so bags on read-only media open too.
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "internal/bag_builder.hpp"
 
@@ -44,29 +46,31 @@ std::string text_column(sqlite3_stmt* s, int column) {
   return t == nullptr ? std::string() : std::string(reinterpret_cast<const char*>(t));
 }
 
-}  // namespace
-
-Status read_rosbag2_sqlite_file(const std::filesystem::path& path, BagBuilder& builder) {
-  const std::string file = path.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return input_error(file + ": no such file");
-  sqlite3* raw_db = nullptr;
-  const int opened = sqlite3_open_v2(file_uri(path).c_str(), &raw_db,
-                                     SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr);
-  Db db(raw_db);
-  if (opened != SQLITE_OK) {
-    return input_error(file + ": cannot open as sqlite3: " +
-                       (db ? sqlite3_errmsg(db.get()) : sqlite3_errstr(opened)));
-  }
+/// Reads tables topics and messages of the open database `db` into `builder`. Both must be
+/// tables: a crafted file could name a view there whose query never ends (a recursive one).
+Status read_tables(sqlite3* db, const std::string& file, BagBuilder& builder) {
   auto prepare = [&](const char* sql, Statement& out) -> Status {
     sqlite3_stmt* s = nullptr;
-    if (sqlite3_prepare_v2(db.get(), sql, -1, &s, nullptr) != SQLITE_OK) {
-      return input_error(file + ": not a rosbag2 sqlite3 file (" + sqlite3_errmsg(db.get()) +
+    if (sqlite3_prepare_v2(db, sql, -1, &s, nullptr) != SQLITE_OK) {
+      sqlite3_finalize(s);
+      return input_error(file + ": not a rosbag2 sqlite3 file (" + sqlite3_errmsg(db) +
                          "; expected tables topics and messages)");
     }
     out.reset(s);
     return Ok{};
   };
+
+  Statement kinds;
+  if (Status s = prepare(
+          "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND "
+          "name IN ('topics', 'messages')",
+          kinds);
+      !s) {
+    return s;
+  }
+  if (sqlite3_step(kinds.get()) != SQLITE_ROW || sqlite3_column_int(kinds.get(), 0) != 2) {
+    return input_error(file + ": not a rosbag2 sqlite3 file (expected tables topics and messages)");
+  }
 
   Statement topics;
   if (Status s =
@@ -82,7 +86,7 @@ Status read_rosbag2_sqlite_file(const std::filesystem::path& path, BagBuilder& b
                                     text_column(topics.get(), 3));
   }
   if (rc != SQLITE_DONE) {
-    return input_error(file + ": reading table topics: " + sqlite3_errmsg(db.get()));
+    return input_error(file + ": reading table topics: " + sqlite3_errmsg(db));
   }
 
   Statement messages;
@@ -105,9 +109,48 @@ Status read_rosbag2_sqlite_file(const std::filesystem::path& path, BagBuilder& b
                     Bytes(static_cast<const std::uint8_t*>(blob), static_cast<std::size_t>(n)));
   }
   if (rc != SQLITE_DONE) {
-    return input_error(file + ": reading table messages: " + sqlite3_errmsg(db.get()));
+    return input_error(file + ": reading table messages: " + sqlite3_errmsg(db));
   }
   return Ok{};
+}
+
+}  // namespace
+
+Status read_rosbag2_sqlite_file(const std::filesystem::path& path, BagBuilder& builder) {
+  const std::string file = path.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return input_error(file + ": no such file");
+  sqlite3* raw_db = nullptr;
+  const int opened = sqlite3_open_v2(file_uri(path).c_str(), &raw_db,
+                                     SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr);
+  Db db(raw_db);
+  if (opened != SQLITE_OK) {
+    return input_error(file + ": cannot open as sqlite3: " +
+                       (db ? sqlite3_errmsg(db.get()) : sqlite3_errstr(opened)));
+  }
+  return read_tables(db.get(), file, builder);
+}
+
+Status decode_rosbag2_sqlite(std::string_view bytes, const std::string& file,
+                             BagBuilder& builder) {
+  sqlite3* raw_db = nullptr;
+  const int opened = sqlite3_open_v2(":memory:", &raw_db, SQLITE_OPEN_READWRITE, nullptr);
+  Db db(raw_db);
+  if (opened != SQLITE_OK) {
+    return input_error(file + ": cannot open an in-memory sqlite3 database: " +
+                       sqlite3_errstr(opened));
+  }
+  // sqlite owns (and frees) the copy; the database is read-only like the files.
+  auto* copy = static_cast<unsigned char*>(sqlite3_malloc64(bytes.size() + 1));
+  if (copy == nullptr) return input_error(file + ": out of memory copying the sqlite3 file");
+  std::copy(bytes.begin(), bytes.end(), copy);
+  if (sqlite3_deserialize(db.get(), "main", copy, static_cast<sqlite3_int64>(bytes.size()),
+                          static_cast<sqlite3_int64>(bytes.size() + 1),
+                          SQLITE_DESERIALIZE_FREEONCLOSE | SQLITE_DESERIALIZE_READONLY) !=
+      SQLITE_OK) {
+    return input_error(file + ": cannot open as sqlite3: " + sqlite3_errmsg(db.get()));
+  }
+  return read_tables(db.get(), file, builder);
 }
 
 }  // namespace tessera::io_internal

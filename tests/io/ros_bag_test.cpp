@@ -195,6 +195,27 @@ TEST(RosBag, SqliteFileWithoutRosbag2TablesIsNamed) {
   EXPECT_THAT(bag.error().message, HasSubstr("other.db3: not a rosbag2 sqlite3 file"));
 }
 
+// A crafted file can put a view where rosbag2 has a table; a recursive one would never end.
+TEST(RosBag, SqliteFileWithAViewForATableIsRefusedBeforeQueryingIt) {
+  TempDir dir;
+  const auto path = dir / "endless.db3";
+  sqlite3* db = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(db,
+                         "CREATE TABLE topics(id INTEGER, name TEXT, type TEXT, "
+                         "serialization_format TEXT);"
+                         "CREATE VIEW messages AS WITH RECURSIVE n(i) AS (SELECT 1 UNION ALL "
+                         "SELECT i + 1 FROM n) SELECT 1 AS topic_id, i AS timestamp, x'00' AS data, "
+                         "i AS id FROM n",
+                         nullptr, nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(db);
+  Result<RosBag> bag = read_ros_bag(path);
+  ASSERT_FALSE(bag.ok());
+  EXPECT_EQ(bag.error().kind, ErrorKind::kInput);
+  EXPECT_THAT(bag.error().message, HasSubstr("endless.db3: not a rosbag2 sqlite3 file"));
+}
+
 TEST(RosBag, Rosbag2FolderProblemsNameMetadataYaml) {
   TempDir dir;
   support::write_bytes(dir / "metadata.yaml",

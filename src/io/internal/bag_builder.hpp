@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "internal/byte_cursor.hpp"
@@ -65,5 +66,14 @@ class BagBuilder {
 [[nodiscard]] Status read_rosbag2_sqlite_file(const std::filesystem::path& path,
                                               BagBuilder& builder);
 [[nodiscard]] Status read_mcap_file(const std::filesystem::path& path, BagBuilder& builder);
+
+/// The same on a storage file's bytes already in memory (the fuzz harnesses; the sqlite one opens
+/// a copy as an in-memory database). kInput errors name `file`.
+[[nodiscard]] Status decode_ros1_bag(std::string_view bytes, const std::string& file,
+                                     BagBuilder& builder);
+[[nodiscard]] Status decode_rosbag2_sqlite(std::string_view bytes, const std::string& file,
+                                           BagBuilder& builder);
+[[nodiscard]] Status decode_mcap(std::string_view bytes, const std::string& file,
+                                 BagBuilder& builder);
 
 }  // namespace tessera::io_internal

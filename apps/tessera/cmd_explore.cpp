@@ -5,12 +5,14 @@
 #include <cmath>
 
 #include "commands.hpp"
+#include "recording.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/report/exploration_report.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/tum_trajectory.hpp"
 #include "tessera/mission/exploration_mission.hpp"
+#include "tessera/record/exploration_recorder.hpp"
 #include "tessera/render/render.hpp"
 
 namespace tessera::cli {
@@ -55,6 +57,7 @@ ExploreCommand::ExploreCommand(CLI::App& app) {
   sub_->add_option("--max-steps", max_steps_, "Stop after this many steps (0: no limit)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  add_record_option(*sub_, record_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
 }
 
@@ -84,12 +87,21 @@ int ExploreCommand::run() const {
   }
   if (auto problem = validate(options)) return report_error(usage_error(*problem));
 
+  Result<Recording> recording = Recording::open(record_);
+  if (!recording) return report_error(recording.error());
+  std::optional<ExplorationRecorder> recorder;
+  if (MessageSink* sink = recording->sink()) recorder.emplace(*sink);
+
   ProgressLine progress(!quiet_ && stderr_is_terminal());
   const auto t0 = std::chrono::steady_clock::now();
-  Result<ExplorationResult> result =
-      run_exploration(world, options, [&](const ExplorationProgress& p) {
+  Result<ExplorationResult> result = run_exploration(
+      world, options,
+      [&](const ExplorationProgress& p) {
         progress.show(fmt::format("explore: step {}  coverage {:.1f}%  frontier {} cells", p.step,
                                   100.0 * p.coverage, p.frontier_size));
+      },
+      [&](const ExplorationMission& mission) {
+        if (recorder && !recording->failed()) recording->note(recorder->step(mission));
       });
   progress.finish();
   const double wall_s = seconds_since(t0);
@@ -146,6 +158,8 @@ int ExploreCommand::run() const {
     return report_error(s.error());
   }
 
+  if (Status s = recording->finish(); !s) return report_error(s.error());
+
   if (!quiet_) {
     const auto& m = r.metrics;
     fmt::print(
@@ -154,6 +168,7 @@ int ExploreCommand::run() const {
         m.robots, m.steps, 100.0 * m.coverage, m.path_length_m, m.turns,
         r.accuracy.occupied_as_empty, m.stop_reason);
     fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt report.json\n", out_.string());
+    if (record_) fmt::print("recording: {}\n", record_->string());
   }
   return kExitOk;
 }

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "recording.hpp"
 #include "slam_report.hpp"
 #include "tessera/core/angle.hpp"
 #include "tessera/eval/drift_correction.hpp"
@@ -24,6 +25,7 @@
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/relations_file.hpp"
+#include "tessera/record/slam_recording.hpp"
 #include "tessera/render/render.hpp"
 #include "tessera/io/robot_bag.hpp"
 #include "tessera/io/tum_trajectory.hpp"
@@ -70,6 +72,7 @@ SlamCommand::SlamCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub_->add_flag("--no-loop-closure", no_loop_closure_,
                  "Local SLAM only: scan-to-submap matching, no pose graph corrections");
+  add_record_option(*sub_, record_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
 }
 
@@ -133,6 +136,9 @@ int SlamCommand::run() const {
     if (!read) return report_error(read.error());
     relations = std::move(read).value();
   }
+
+  Result<Recording> recording = Recording::open(record_);
+  if (!recording) return report_error(recording.error());
 
   ProgressLine progress(!quiet_ && stderr_is_terminal());
   options.progress = [&progress](const slam::SlamProgress& p) {
@@ -203,6 +209,8 @@ int SlamCommand::run() const {
       !s) {
     return report_error(s.error());
   }
+  if (MessageSink* sink = recording->sink()) recording->note(record_laser_slam(*sink, log, r));
+  if (Status s = recording->finish(); !s) return report_error(s.error());
 
   if (!quiet_) {
     fmt::print(
@@ -227,6 +235,7 @@ int SlamCommand::run() const {
     }
     fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt graph.g2o report.json{}\n",
                out_.string(), simulated ? " truth.txt odometry.txt" : "");
+    if (record_) fmt::print("recording: {}\n", record_->string());
   }
   return kExitOk;
 }

@@ -48,6 +48,7 @@ class ExploreCommand : public Command {
   double range_noise_m_ = kDefaults.lidar.range_noise_stddev_m;
   double low_ = kDefaults.low;
   std::int64_t max_steps_ = kDefaults.max_steps;
+  std::optional<std::filesystem::path> record_;
   bool quiet_ = false;
 };
 
@@ -175,6 +176,7 @@ class SlamCommand : public Command {
   double time_offset_s_ = 0.0;
   std::optional<double> cell_m_;  // default: 0.05 m for a log, the world's cell for a simulated run
   bool no_loop_closure_ = false;
+  std::optional<std::filesystem::path> record_;
   bool quiet_ = false;
 };
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace tessera {
@@ -54,35 +55,48 @@ void remove_stale_temps(const std::filesystem::path& path) {
   }
 }
 
-// Writes and fsyncs `bytes` into a fresh `tmp`. Leaves nothing behind on failure.
-Status write_temp(const std::filesystem::path& tmp, const std::filesystem::path& target,
-                  std::string_view bytes) {
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    return runtime_error(target.string() + ": cannot write: " + std::strerror(errno));
-  }
+Status cannot_write(const std::filesystem::path& target, int error) {
+  return runtime_error(target.string() + ": cannot write: " + std::strerror(error));
+}
+
+// Writes all of `bytes` to `fd`; 0 or the errno of the failure.
+int write_all(int fd, std::string_view bytes) {
   std::size_t done = 0;
   while (done < bytes.size()) {
     const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
-      const std::string reason = std::strerror(errno);
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      return runtime_error(target.string() + ": cannot write: " + reason);
+      return errno;
     }
     done += static_cast<std::size_t>(n);
   }
+  return 0;
+}
+
+// Flushes `fd` to disk and closes it; 0 or the errno of the failure (the fd is closed either way).
+int sync_and_close(int fd) {
   if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) {
-    const std::string reason = std::strerror(errno);
+    const int error = errno;
     ::close(fd);
-    ::unlink(tmp.c_str());
-    return runtime_error(target.string() + ": cannot write: " + reason);
+    return error;
   }
-  if (::close(fd) != 0) {
-    const std::string reason = std::strerror(errno);
+  return ::close(fd) != 0 ? errno : 0;
+}
+
+// Writes and fsyncs `bytes` into a fresh `tmp`. Leaves nothing behind on failure.
+Status write_temp(const std::filesystem::path& tmp, const std::filesystem::path& target,
+                  std::string_view bytes) {
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return cannot_write(target, errno);
+  int error = write_all(fd, bytes);
+  if (error != 0) {
+    ::close(fd);
+  } else {
+    error = sync_and_close(fd);
+  }
+  if (error != 0) {
     ::unlink(tmp.c_str());
-    return runtime_error(target.string() + ": cannot write: " + reason);
+    return cannot_write(target, error);
   }
   return Ok{};
 }
@@ -119,6 +133,70 @@ Status write_files_atomic(std::span<const PendingFile> files) {
       remove_temps(i);
       return runtime_error(files[i].path.string() + ": cannot write: " + reason);
     }
+  }
+  return Ok{};
+}
+
+Result<AtomicFileWriter> AtomicFileWriter::open(const std::filesystem::path& path) {
+  if (path.empty() || !path.has_filename()) {
+    return runtime_error("'" + path.string() + "': cannot write: not a file name");
+  }
+  remove_stale_temps(path);
+  std::filesystem::path temp = temp_path_for(path);
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return cannot_write(path, errno).error();
+  return AtomicFileWriter(path, std::move(temp), fd);
+}
+
+AtomicFileWriter::AtomicFileWriter(AtomicFileWriter&& other) noexcept
+    : path_(std::move(other.path_)),
+      temp_(std::move(other.temp_)),
+      fd_(std::exchange(other.fd_, -1)),
+      size_(other.size_),
+      failed_(other.failed_) {}
+
+AtomicFileWriter& AtomicFileWriter::operator=(AtomicFileWriter&& other) noexcept {
+  if (this != &other) {
+    abandon();
+    path_ = std::move(other.path_);
+    temp_ = std::move(other.temp_);
+    fd_ = std::exchange(other.fd_, -1);
+    size_ = other.size_;
+    failed_ = other.failed_;
+  }
+  return *this;
+}
+
+AtomicFileWriter::~AtomicFileWriter() { abandon(); }
+
+void AtomicFileWriter::abandon() {
+  if (fd_ < 0) return;
+  ::close(fd_);
+  ::unlink(temp_.c_str());
+  fd_ = -1;
+}
+
+Status AtomicFileWriter::append(std::string_view bytes) {
+  if (fd_ < 0 || failed_) return runtime_error(path_.string() + ": cannot write: already failed");
+  if (const int error = write_all(fd_, bytes); error != 0) {
+    failed_ = true;
+    return cannot_write(path_, error);
+  }
+  size_ += bytes.size();
+  return Ok{};
+}
+
+Status AtomicFileWriter::commit() {
+  if (fd_ < 0 || failed_) return runtime_error(path_.string() + ": cannot write: already failed");
+  const int fd = std::exchange(fd_, -1);
+  if (const int error = sync_and_close(fd); error != 0) {
+    ::unlink(temp_.c_str());
+    return cannot_write(path_, error);
+  }
+  if (::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const int error = errno;
+    ::unlink(temp_.c_str());
+    return cannot_write(path_, error);
   }
   return Ok{};
 }

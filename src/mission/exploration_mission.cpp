@@ -397,7 +397,8 @@ void step_exploration(SimulatedExploration& run) {
 
 Result<ExplorationResult> run_exploration(
     const World& world, const ExplorationMissionOptions& options,
-    const std::function<void(const ExplorationProgress&)>& progress) {
+    const std::function<void(const ExplorationProgress&)>& progress,
+    const std::function<void(const ExplorationMission&)>& on_step) {
   Result<SimulatedExploration> started = start_exploration(world, options);
   if (!started) return started.error();
   SimulatedExploration& run = *started;
@@ -408,14 +409,17 @@ Result<ExplorationResult> run_exploration(
     scorer.observe(mission.steps(), mission.distance_m(), mission.map(), mission.changed_cells());
   };
   observe();
+  if (on_step) on_step(mission);
   Clock::time_point last_progress = Clock::now();
   for (step_exploration(run); !mission.finished(); step_exploration(run)) {
     observe();
+    if (on_step) on_step(mission);
     if (progress && Clock::now() - last_progress >= std::chrono::milliseconds(500)) {
       last_progress = Clock::now();
       progress(ExplorationProgress{mission.steps(), scorer.coverage(), mission.frontier().size()});
     }
   }
+  if (on_step) on_step(mission);  // finished
 
   ExplorationResult out;
   out.metrics = scorer.finish(mission.steps(), mission.distance_m(), mission.moves(),

@@ -1,5 +1,6 @@
 // Outputs survive a kill: `tessera explore` and `tessera slam` write every output file through
-// write_files_atomic (a hidden temporary, fsync, rename), so a run killed with SIGKILL at any
+// write_files_atomic, and the --record file through AtomicFileWriter (a hidden temporary, fsync,
+// rename), so a run killed with SIGKILL at any
 // moment leaves each output either as the previous complete run wrote it or as the new run writes
 // it, never half-written, and no temporary that could be taken for an output.
 //
@@ -192,24 +193,28 @@ void check_kills(ArgsFor args_for, int expected_outputs) {
   ::testing::Test::RecordProperty("with_temp", with_temp);
 }
 
+// Both commands also record the run (--record) into the output folder: the MCAP file is written
+// piece by piece while the others are written whole, and must survive a kill the same way.
 std::vector<std::string> explore_args(int seed, const fs::path& out) {
-  return {"explore", "--builtin", "labyrinth", "--seed", std::to_string(seed),
-          "--quiet", "--out",     out.string()};
+  return {"explore", "--builtin", "labyrinth", "--seed",   std::to_string(seed),
+          "--quiet", "--out",     out.string(), "--record", (out / "run.mcap").string()};
 }
 
 std::vector<std::string> slam_args(int seed, const fs::path& out) {
-  return {"slam",         "--builtin", "labyrinth", "--seed", std::to_string(seed),
-          "--duration-s", "5",         "--quiet",   "--out",  out.string()};
+  return {"slam",     "--builtin",  "labyrinth", "--seed",   std::to_string(seed),
+          "--duration-s", "5",      "--quiet",   "--out",    out.string(),
+          "--record", (out / "run.mcap").string()};
 }
 
 TEST(CliKill, ExploreKilledAtRandomLeavesEveryOutputOldOrNewAndComplete) {
-  // map.yaml, map.pgm, map.png, trajectory.txt, report.json
-  check_kills(&explore_args, 5);
+  // map.yaml, map.pgm, map.png, trajectory.txt, report.json, run.mcap
+  check_kills(&explore_args, 6);
 }
 
 TEST(CliKill, SlamKilledAtRandomLeavesEveryOutputOldOrNewAndComplete) {
-  // map.yaml, map.pgm, map.png, trajectory.txt, graph.g2o, report.json, truth.txt, odometry.txt
-  check_kills(&slam_args, 8);
+  // map.yaml, map.pgm, map.png, trajectory.txt, graph.g2o, report.json, truth.txt, odometry.txt,
+  // run.mcap
+  check_kills(&slam_args, 9);
 }
 
 }  // namespace

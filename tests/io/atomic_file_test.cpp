@@ -117,5 +117,35 @@ TEST(EnsureDirectory, AFileInTheWayIsARuntimeError) {
   EXPECT_THAT(s.error().message, HasSubstr("a file is in the way"));
 }
 
+TEST(AtomicFileWriter, PiecesAppearOnlyOnCommit) {
+  TempDir dir;
+  const auto path = dir / "run.mcap";
+  io_test::write_bytes(path, "old");
+  Result<AtomicFileWriter> writer = AtomicFileWriter::open(path);
+  ASSERT_TRUE(writer.ok()) << writer.error().message;
+  ASSERT_TRUE(writer->append("new "));
+  ASSERT_TRUE(writer->append("bytes"));
+  EXPECT_EQ(writer->size(), 9U);
+  EXPECT_EQ(read_bytes(path), "old");  // until committed
+  AtomicFileWriter moved = std::move(*writer);
+  ASSERT_TRUE(moved.commit());
+  EXPECT_EQ(read_bytes(path), "new bytes");
+  EXPECT_THAT(files_in(dir.path()), ElementsAre("run.mcap"));
+  EXPECT_FALSE(moved.commit());  // once
+}
+
+TEST(AtomicFileWriter, DroppedWithoutCommitLeavesTheOldFileAndNoTemporary) {
+  TempDir dir;
+  const auto path = dir / "run.mcap";
+  io_test::write_bytes(path, "old");
+  {
+    Result<AtomicFileWriter> writer = AtomicFileWriter::open(path);
+    ASSERT_TRUE(writer.ok());
+    ASSERT_TRUE(writer->append("half a recording"));
+  }
+  EXPECT_EQ(read_bytes(path), "old");
+  EXPECT_THAT(files_in(dir.path()), ElementsAre("run.mcap"));
+}
+
 }  // namespace
 }  // namespace tessera

@@ -239,11 +239,14 @@ void step_exploration(SimulatedExploration& run);
 ///
 /// Errors (kInput): "world has no free cell"; "start (x, y) is outside the map"; "start (x, y) is
 /// inside an obstacle"; fewer free cells reachable from the start than robots. kUsage: options that
-/// fail validate(). Deterministic for a given seed (except planning_time_s); the progress callback
-/// does not influence the run.
+/// fail validate(). Deterministic for a given seed (except planning_time_s); the callbacks do not
+/// influence the run. `progress` is called at most twice a second; `on_step` with the mission
+/// after the robots' first sensing, after every step, and once finished (a recording, the live
+/// view).
 [[nodiscard]] Result<ExplorationResult> run_exploration(
     const World& world, const ExplorationMissionOptions& options,
-    const std::function<void(const ExplorationProgress&)>& progress = {});
+    const std::function<void(const ExplorationProgress&)>& progress = {},
+    const std::function<void(const ExplorationMission&)>& on_step = {});
 
 /// The start cells run_exploration would use: options.start (checked) or the default, followed by
 /// the further robots' cells. Same errors as run_exploration.

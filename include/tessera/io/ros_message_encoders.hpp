@@ -1,0 +1,106 @@
+#pragma once
+// The ROS 2 messages tessera writes (MCAP recordings, the live view): CDR encoders and their
+// ros2msg definitions (MCAP schema encoding "ros2msg": the type's definition, then each type it
+// uses after a line of 80 '=' and "MSG: pkg/Type"). Layouts are ROS 2 Humble's: sensor_msgs/
+// LaserScan, nav_msgs/Odometry, tf2_msgs/TFMessage (ros_messages.hpp has their structs and
+// decoders), nav_msgs/OccupancyGrid, nav_msgs/Path, visualization_msgs/MarkerArray.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tessera/io/ros_messages.hpp"
+
+namespace tessera {
+
+/// nav_msgs/OccupancyGrid: cells row-major from the cell at `origin` (its lower-left corner),
+/// x along a row; -1 unknown, 0..100 the probability of occupancy in percent.
+struct OccupancyGridMessage {
+  RosHeader header;
+  std::int64_t map_load_time_ns = 0;
+  float resolution_m = 0.0F;
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  RosTransform origin;  // T_frame_cell00corner (geometry_msgs/Pose)
+  std::vector<std::int8_t> data;
+};
+
+/// geometry_msgs/PoseStamped.
+struct PoseStampedMessage {
+  RosHeader header;
+  RosTransform pose;
+};
+
+/// nav_msgs/Path.
+struct PathMessage {
+  RosHeader header;
+  std::vector<PoseStampedMessage> poses;
+};
+
+/// geometry_msgs/Point (and Vector3).
+struct RosPoint {
+  double x_m = 0.0, y_m = 0.0, z_m = 0.0;
+};
+
+/// std_msgs/ColorRGBA, components in [0, 1].
+struct RosColor {
+  float r = 1.0F, g = 1.0F, b = 1.0F, a = 1.0F;
+};
+
+/// visualization_msgs/Marker: the fields tessera fills (texture, UV coordinates and mesh are
+/// written empty).
+struct MarkerMessage {
+  static constexpr std::int32_t kArrow = 0;
+  static constexpr std::int32_t kLineStrip = 4;
+  static constexpr std::int32_t kCubeList = 6;
+  static constexpr std::int32_t kSphereList = 7;
+  static constexpr std::int32_t kPoints = 8;
+  static constexpr std::int32_t kText = 9;
+  static constexpr std::int32_t kAdd = 0;
+  static constexpr std::int32_t kDeleteAll = 3;
+
+  RosHeader header;
+  std::string ns;
+  std::int32_t id = 0;
+  std::int32_t type = kPoints;
+  std::int32_t action = kAdd;
+  RosTransform pose;
+  RosPoint scale{1.0, 1.0, 1.0};
+  RosColor color;
+  std::int64_t lifetime_ns = 0;  // 0: forever
+  bool frame_locked = false;
+  std::vector<RosPoint> points;
+  std::vector<RosColor> colors;  // empty, or one per point
+  std::string text;
+};
+
+/// visualization_msgs/MarkerArray.
+struct MarkerArrayMessage {
+  std::vector<MarkerMessage> markers;
+};
+
+/// The type names as MCAP schemas and ROS 2 name them.
+inline constexpr std::string_view kRos2LaserScan = "sensor_msgs/msg/LaserScan";
+inline constexpr std::string_view kRos2Odometry = "nav_msgs/msg/Odometry";
+inline constexpr std::string_view kRos2TfMessage = "tf2_msgs/msg/TFMessage";
+inline constexpr std::string_view kRos2OccupancyGrid = "nav_msgs/msg/OccupancyGrid";
+inline constexpr std::string_view kRos2Path = "nav_msgs/msg/Path";
+inline constexpr std::string_view kRos2MarkerArray = "visualization_msgs/msg/MarkerArray";
+
+/// CDR (little endian, with the encapsulation header) of each message.
+[[nodiscard]] std::vector<std::uint8_t> encode_cdr(const LaserScanMessage& m);
+[[nodiscard]] std::vector<std::uint8_t> encode_cdr(const OdometryMessage& m);
+[[nodiscard]] std::vector<std::uint8_t> encode_cdr(const TfMessage& m);
+[[nodiscard]] std::vector<std::uint8_t> encode_cdr(const OccupancyGridMessage& m);
+[[nodiscard]] std::vector<std::uint8_t> encode_cdr(const PathMessage& m);
+[[nodiscard]] std::vector<std::uint8_t> encode_cdr(const MarkerArrayMessage& m);
+
+/// The ros2msg definition of one of the kRos2* types, with every type it uses; empty for a type
+/// tessera does not write.
+[[nodiscard]] std::string ros2msg_definition(std::string_view type);
+
+/// RosTransform of a planar pose: translation (x, y, 0), rotation yaw about z.
+[[nodiscard]] RosTransform planar_transform(double x_m, double y_m, double yaw_rad);
+
+}  // namespace tessera

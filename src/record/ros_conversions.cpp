@@ -1,0 +1,82 @@
+#include "tessera/record/ros_conversions.hpp"
+
+#include <cmath>
+#include <optional>
+
+namespace tessera {
+
+std::int64_t to_ns(double t_s) { return std::llround(t_s * 1e9); }
+
+OccupancyGridMessage occupancy_grid_message(const OccupancyGrid& map, std::int64_t stamp_ns,
+                                            const std::string& frame) {
+  const GridGeometry& g = map.geometry();
+  OccupancyGridMessage m;
+  m.header = {stamp_ns, frame};
+  m.map_load_time_ns = stamp_ns;
+  m.resolution_m = static_cast<float>(g.resolution_m());
+  m.width = static_cast<std::uint32_t>(g.width());
+  m.height = static_cast<std::uint32_t>(g.height());
+  m.origin = planar_transform(g.origin().x, g.origin().y, 0.0);
+  m.data.resize(g.size());
+  // GridGeometry's index is ROS's: row-major from the origin cell, x along a row.
+  for (std::size_t i = 0; i < g.size(); ++i) {
+    const std::optional<double> p = map.probability_at(g.cell_of(i));
+    m.data[i] = p ? static_cast<std::int8_t>(std::lround(100.0 * *p)) : std::int8_t{-1};
+  }
+  return m;
+}
+
+PathMessage path_message(std::span<const Pose2> poses, std::span<const std::int64_t> stamps_ns,
+                         std::int64_t stamp_ns, const std::string& frame) {
+  PathMessage m;
+  m.header = {stamp_ns, frame};
+  m.poses.reserve(poses.size());
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const Pose2& p = poses[i];
+    m.poses.push_back({{stamps_ns[i], frame}, planar_transform(p.x, p.y, p.theta)});
+  }
+  return m;
+}
+
+LaserScanMessage laser_scan_message(const RangeScan& scan, std::int64_t stamp_ns,
+                                    const std::string& frame) {
+  LaserScanMessage m;
+  m.header = {stamp_ns, frame};
+  const std::size_t n = scan.ranges_m.size();
+  m.angle_min_rad = static_cast<float>(scan.angle_min_rad);
+  m.angle_increment_rad = static_cast<float>(scan.angle_increment_rad);
+  m.angle_max_rad = static_cast<float>(
+      scan.angle_min_rad + scan.angle_increment_rad * static_cast<double>(n > 0 ? n - 1 : 0));
+  m.range_min_m = static_cast<float>(scan.min_range_m);
+  m.range_max_m = static_cast<float>(scan.max_range_m);
+  m.ranges_m.reserve(n);
+  for (const double r : scan.ranges_m) m.ranges_m.push_back(static_cast<float>(r));
+  return m;
+}
+
+TransformStampedMessage planar_transform_stamped(const Pose2& T_parent_child,
+                                                 std::int64_t stamp_ns, const std::string& parent,
+                                                 const std::string& child) {
+  return {{stamp_ns, parent},
+          child,
+          planar_transform(T_parent_child.x, T_parent_child.y, T_parent_child.theta)};
+}
+
+MarkerMessage cell_marker(std::span<const Cell> cells, const GridGeometry& geometry,
+                          std::int64_t stamp_ns, const std::string& frame, const std::string& ns,
+                          RosColor color, double height_m, double z_m) {
+  MarkerMessage m;
+  m.header = {stamp_ns, frame};
+  m.ns = ns;
+  m.type = MarkerMessage::kCubeList;
+  m.scale = {geometry.resolution_m(), geometry.resolution_m(), height_m};
+  m.color = color;
+  m.points.reserve(cells.size());
+  for (const Cell c : cells) {
+    const Vec2 p = geometry.center_of(c);
+    m.points.push_back({p.x, p.y, z_m});
+  }
+  return m;
+}
+
+}  // namespace tessera

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "bob_emulator.hpp"
+#include "bob_step_outputs.hpp"
 #include "commands.hpp"
+#include "recording.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/bob_firmware_link.hpp"
 #include "tessera/io/bob_map_file.hpp"
@@ -74,6 +76,7 @@ BobCommand::BobCommand(CLI::App& app) {
                    "Write the monitor picture (map and route so far) after every step as "
                    "step_NNNNN.png in this folder");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
+  add_record_option(*sub_, record_);
   sub_->add_flag("--quiet", quiet_, "No summary");
 }
 
@@ -118,22 +121,12 @@ int BobCommand::run() const {
   }
 
   // --monitor-dir: a picture of the robot's map and route after every step (BOBMapping Figure 5a's
-  // monitor), from the firmware's own stream with --firmware.
-  Status monitor_status = Ok{};
-  int frame = 0;
-  if (monitor_dir_) {
-    if (Status s = ensure_directory(*monitor_dir_); !s) return report_error(s.error());
-    options.on_step = [&](const BobResult& so_far) {
-      if (!monitor_status) return;
-      Result<std::string> png = encode_png(render_bob_monitor(so_far));
-      if (!png) {
-        monitor_status = png.error();
-        return;
-      }
-      monitor_status =
-          write_file_atomic(*monitor_dir_ / fmt::format("step_{:05d}.png", frame++), *png);
-    };
-  }
+  // monitor), and --record: the same as ROS 2 messages; from the firmware's run with --firmware.
+  Result<Recording> recording = Recording::open(record_);
+  if (!recording) return report_error(recording.error());
+  BobStepOutputs step_outputs(monitor_dir_, recording->sink(), truth.geometry());
+  if (Status s = step_outputs.prepare(); !s) return report_error(s.error());
+  options.on_step = step_outputs.on_step();
   // --firmware: the explorer runs as firmware on the emulated board; the host build's own run of
   // the same world and seed must give the same final map, byte for byte.
   std::optional<Result<BobResult>> firmware_result;
@@ -166,7 +159,7 @@ int BobCommand::run() const {
   }
   const std::unique_ptr<BobExplorerPort> host_explorer = local_bob_explorer();
   Result<BobResult> result = run_bob(world, truth, options, *host_explorer);
-  if (!monitor_status) return report_error(monitor_status.error());
+  if (!step_outputs.status()) return report_error(step_outputs.status().error());
   if (!result) {
     Error e = result.error();
     if (e.kind == ErrorKind::kInput) e.message = world_name + ": " + e.message;
@@ -226,6 +219,8 @@ int BobCommand::run() const {
   const std::array<PendingFile, 3> files{
       {{out_ / "monitor.png", *png}, {out_ / "map.bob", *map_bytes}, {out_ / "report.json", json}}};
   if (Status s = write_files_atomic(files); !s) return report_error(s.error());
+  if (Status s = step_outputs.finish(r); !s) return report_error(s.error());
+  if (Status s = recording->finish(); !s) return report_error(s.error());
 
   if (!quiet_) {
     const BobTableRow& t = row;
@@ -242,6 +237,7 @@ int BobCommand::run() const {
                  firmware_->string());
     }
     fmt::print("outputs: {}/monitor.png map.bob report.json\n", out_.string());
+    if (record_) fmt::print("recording: {}\n", record_->string());
   }
   return kExitOk;
 }

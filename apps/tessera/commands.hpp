@@ -112,6 +112,7 @@ class BobCommand : public Command {
   std::filesystem::path out_ = "out/bob";
   bool quiet_ = false;
   std::optional<std::filesystem::path> firmware_;
+  std::optional<std::filesystem::path> record_;
   std::optional<std::filesystem::path> monitor_dir_;
   std::string qemu_ = "qemu-system-arm";
   double firmware_timeout_s_ = 20.0;

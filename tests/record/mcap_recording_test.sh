@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Third-party check of --record: `tessera explore` (two lidar robots) and `tessera slam` (a
-# simulated run) write MCAP files that npm's @mcap/core reads through their summary (chunk
+# Third-party check of --record: `tessera explore` (two lidar robots), `tessera bob` and `tessera
+# slam` (a simulated run) write MCAP files that npm's @mcap/core reads through their summary (chunk
 # indexes, statistics, CRCs, seek by time) and whose every message @foxglove/rosmsg2-serialization
 # decodes against the ros2msg schema in the file (check_recording.cjs). Then the failures: a run
 # that fails on its input (exit 3) and a recording that cannot be created (exit 4) leave no file.
@@ -44,6 +44,9 @@ check() { NODE_PATH="$npm_dir/node_modules" node "$here/check_recording.cjs" "$@
 
 "$cli" explore --sensor lidar --robots 2 --out "$work/explore" --record "$work/explore.mcap" --quiet
 check "$work/explore.mcap" /tf /map /frontier /robot0/path /robot1/path
+
+"$cli" bob --out "$work/bob" --record "$work/bob.mcap" --quiet
+check "$work/bob.mcap" /map /tf /path
 
 "$cli" slam --duration-s 40 --out "$work/slam" --record "$work/rec/slam.mcap" --quiet
 check "$work/rec/slam.mcap" /scan /odom /tf /tf_static /map /path

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -42,6 +43,39 @@ void ProgressLine::show(const std::string& text) {
   fmt::print(stderr, "\r\033[K{}", text);
   std::fflush(stderr);
   shown_ = true;
+}
+
+namespace {
+
+// "m:ss" (or "h:mm:ss") of a duration.
+std::string clock_text(double seconds) {
+  const auto s = static_cast<long long>(std::max(0.0, seconds) + 0.5);
+  if (s >= 3600) return fmt::format("{}:{:02}:{:02}", s / 3600, (s / 60) % 60, s % 60);
+  return fmt::format("{}:{:02}", s / 60, s % 60);
+}
+
+}  // namespace
+
+void ProgressLine::show(const std::string& text, std::int64_t done, std::int64_t total,
+                        const std::string& unit) {
+  if (!enabled_) return;
+  const double elapsed_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double fraction =
+      total > 0 ? std::clamp(static_cast<double>(done) / static_cast<double>(total), 0.0, 1.0)
+                : 0.0;
+  constexpr int kWidth = 24;
+  const int filled = static_cast<int>(fraction * kWidth);
+  std::string line = "[" + std::string(static_cast<std::size_t>(filled), '#') +
+                     std::string(static_cast<std::size_t>(kWidth - filled), '.') + "] " +
+                     fmt::format("{:3.0f}%  {}  {} elapsed", 100.0 * fraction, text,
+                                 clock_text(elapsed_s));
+  if (elapsed_s > 0.0 && done > 0) {
+    const double rate = static_cast<double>(done) / elapsed_s;
+    line += fmt::format("  {:.0f} {}/s  {} left", rate, unit,
+                        clock_text(static_cast<double>(total - done) / rate));
+  }
+  show(line);
 }
 
 void ProgressLine::finish() {

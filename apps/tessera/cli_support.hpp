@@ -2,6 +2,7 @@
 // Glue shared by the subcommands: exit codes, error lines, progress on a terminal, loading a world.
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -37,6 +38,11 @@ class ProgressLine {
   explicit ProgressLine(bool enabled);
   ~ProgressLine();
   void show(const std::string& text);
+  /// A bar for `done` of `total` units of work, then `text`, the elapsed time, the rate in
+  /// `unit`s per second and the time left at that rate: "[#####.......]  41%  scan 2262/5505
+  /// 0:16 elapsed  141 scans/s  0:23 left".
+  void show(const std::string& text, std::int64_t done, std::int64_t total,
+            const std::string& unit);
   void finish();
 
  private:

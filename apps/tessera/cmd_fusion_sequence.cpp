@@ -50,7 +50,11 @@ int FusionCommand::run_sequence() const {
   const Result<fusion::ReplayResult> replayed = fusion::replay(
       slam, steps, [&](std::size_t step) { return sequence->load(entry_of_step[step]); },
       [&](std::size_t done, std::size_t total) {
-        if (done % 25 == 0) progress.show(fmt::format("fusion: frame {}/{}", done, total));
+        if (done % 25 == 0) {
+          progress.show(fmt::format("fusion: frame {}/{}", done, total),
+                        static_cast<std::int64_t>(done), static_cast<std::int64_t>(total),
+                        "frames");
+        }
       });
   progress.finish();
   if (!replayed) return report_error(replayed.error());

@@ -140,7 +140,11 @@ int FusionCommand::run_mapping() const {
         return render_rgbd_run_frame(setup->camera, *run, i);
       },
       [&](std::size_t done, std::size_t total) {
-        if (done % 25 == 0) progress.show(fmt::format("fusion: frame {}/{}", done, total));
+        if (done % 25 == 0) {
+          progress.show(fmt::format("fusion: frame {}/{}", done, total),
+                        static_cast<std::int64_t>(done), static_cast<std::int64_t>(total),
+                        "frames");
+        }
       });
   progress.finish();
   if (!replayed) return report_error(replayed.error());

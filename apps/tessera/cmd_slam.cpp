@@ -143,8 +143,9 @@ int SlamCommand::run() const {
   ProgressLine progress(!quiet_ && stderr_is_terminal());
   options.progress = [&progress](const slam::SlamProgress& p) {
     if (p.scans_done % 25 != 0 && p.scans_done != p.scans_total) return;
-    progress.show(fmt::format("slam: scan {}/{}  nodes {}  submaps {}  loop closures {}",
-                              p.scans_done, p.scans_total, p.nodes, p.submaps, p.loop_closures));
+    progress.show(fmt::format("slam: scan {}/{}  submaps {}  loop closures {}", p.scans_done,
+                              p.scans_total, p.submaps, p.loop_closures),
+                  p.scans_done, p.scans_total, "scans");
   };
   const auto t0 = std::chrono::steady_clock::now();
   Result<slam::LaserSlamResult> result = slam::run_laser_slam(log, options);

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "tessera/sim/world.hpp"
+#include "support/text_world.hpp"
 
 namespace tessera {
 namespace {
@@ -14,24 +14,10 @@ namespace {
 TruthGrid truth_of(const World& w) { return TruthGrid(w.geometry(), w.solid_cells()); }
 
 /// Rows top first, '#' solid; one cell per character, `cell_m` wide.
-World text_world(const std::vector<std::string>& rows, double cell_m) {
-  const int h = static_cast<int>(rows.size());
-  const int w = static_cast<int>(rows.front().size());
-  const GridGeometry g({0.0, 0.0}, cell_m, w, h);
-  std::vector<std::uint8_t> solid(g.size(), 0);
-  for (int r = 0; r < h; ++r) {
-    for (int x = 0; x < w; ++x) {
-      solid[g.index_of({x, h - 1 - r})] =
-          rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(x)] == '#' ? 1 : 0;
-    }
-  }
-  return World(g, std::move(solid), "text");
-}
-
 // A 4 x 4 grid: a 2 x 2 room inside a wall. The map is the truth except one wall cell read free
 // and one free cell read occupied; one corner is not sensed.
 TEST(BobTable, CountsErrorsPathAndTheSmartDfsBoundOfAKnownMap) {
-  const World truth = text_world({"####", "#..#", "#..#", "####"}, 0.22);
+  const World truth = support::text_world({"####", "#..#", "#..#", "####"}, 0.22);
   const GridGeometry& g = truth.geometry();
   std::vector<std::uint8_t> sensed(g.size(), 1);
   std::vector<std::uint8_t> occupied(g.size(), 0);

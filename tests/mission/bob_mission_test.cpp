@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "support/text_world.hpp"
 #include "tessera/bob/final_map.hpp"
 #include "tessera/eval/bob_table.hpp"
 #include "tessera/sim/builtin_world.hpp"
@@ -21,21 +22,8 @@ using ::testing::HasSubstr;
 constexpr double kCellM = 0.22;
 
 /// Rows top first; '#' solid, anything else free. 'R' marks a start cell (returned via `start`).
-World text_world(const std::vector<std::string>& rows, Cell* start = nullptr,
-                 double cell_m = kCellM) {
-  const int h = static_cast<int>(rows.size());
-  const int w = static_cast<int>(rows.front().size());
-  const GridGeometry g({0.0, 0.0}, cell_m, w, h);
-  std::vector<std::uint8_t> solid(g.size(), 0);
-  for (int r = 0; r < h; ++r) {
-    for (int x = 0; x < w; ++x) {
-      const char ch = rows[static_cast<std::size_t>(r)][static_cast<std::size_t>(x)];
-      const Cell c{x, h - 1 - r};
-      solid[g.index_of(c)] = ch == '#' ? 1 : 0;
-      if (ch == 'R' && start != nullptr) *start = c;
-    }
-  }
-  return World(g, std::move(solid), "text");
+World text_world(const std::vector<std::string>& rows, Cell* start = nullptr) {
+  return support::text_world(rows, kCellM, start);
 }
 
 /// A run and its Table 1 row (eval/bob_table.hpp).
@@ -307,7 +295,7 @@ TEST(BobMission, RefusesAStartFacingAWall) {
 }
 
 TEST(BobMission, RefusesACellSmallerThanTheRobot) {
-  const World world = text_world(worlds()[0], nullptr, 0.1);
+  const World world = support::text_world(worlds()[0], 0.1);
   BobMissionOptions o;
   o.cell_m = 0.1;
   const Result<ScoredRun> r = run_scored(world, o);

@@ -24,8 +24,10 @@ build: configure
 cli: configure
 	cmake --build --preset dev -j $(JOBS) --target tessera
 
+# Three lidar robots share one map of the built-in office (lecture Algo 9.1); the run is also
+# recorded as ROS 2 messages (open run.mcap in Foxglove: map, robots, paths, frontier).
 demo: cli
-	$(TESSERA) explore --out $(DEMO_OUT)
+	$(TESSERA) explore --sensor lidar --robots 3 --out $(DEMO_OUT) --record $(DEMO_OUT)/run.mcap
 
 ifeq ($(CI),true)
 test: test-ci bob-firmware bob-firmware-test fuzz-smoke

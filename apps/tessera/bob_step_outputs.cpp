@@ -10,8 +10,8 @@
 
 namespace tessera::cli {
 
-BobStepOutputs::BobStepOutputs(std::optional<std::filesystem::path> monitor_dir,
-                               MessageSink* sink, const GridGeometry& robot_grid)
+BobStepOutputs::BobStepOutputs(std::optional<std::filesystem::path> monitor_dir, MessageSink* sink,
+                               const GridGeometry& robot_grid)
     : monitor_dir_(std::move(monitor_dir)) {
   if (sink != nullptr) recorder_.emplace(*sink, robot_grid);
 }

@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "recording.hpp"
+#include "tessera/record/fusion_recording.hpp"
 #include "tessera/report/core_report.hpp"
 #include "fusion_report.hpp"
 #include "tessera/fusion/replay.hpp"
@@ -46,6 +48,8 @@ int FusionCommand::run_sequence() const {
   options.seed = options_.seed;
   fusion::FusionSlam slam(options);
   const auto t0 = std::chrono::steady_clock::now();
+  Result<Recording> recording = Recording::open(options_.record);
+  if (!recording) return report_error(recording.error());
   ProgressLine progress(!options_.quiet && stderr_is_terminal());
   const Result<fusion::ReplayResult> replayed = fusion::replay(
       slam, steps, [&](std::size_t step) { return sequence->load(entry_of_step[step]); },
@@ -81,9 +85,12 @@ int FusionCommand::run_sequence() const {
   if (Status s = write_slam_outputs(options_.out, *svg, picture, slam, truth, report); !s) {
     return report_error(s.error());
   }
+  if (MessageSink* sink = recording->sink()) recording->note(record_fusion_run(*sink, slam, truth));
+  if (Status s = recording->finish(); !s) return report_error(s.error());
   if (!options_.quiet) {
     print_slam_summary("sequence " + options_.sequence->string(), *type, slam, report["trajectory"],
                        options_.out, !truth.empty());
+    if (options_.record) fmt::print("recording: {}\n", options_.record->string());
   }
   return kExitOk;
 }

@@ -8,6 +8,8 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "recording.hpp"
+#include "tessera/record/fusion_recording.hpp"
 #include "tessera/io/data_dir.hpp"
 #include "tessera/report/core_report.hpp"
 #include "fusion_report.hpp"
@@ -133,6 +135,8 @@ int FusionCommand::run_mapping() const {
   }
   fusion::FusionSlam slam(options.slam);
   const auto t0 = std::chrono::steady_clock::now();
+  Result<Recording> recording = Recording::open(options_.record);
+  if (!recording) return report_error(recording.error());
   ProgressLine progress(!options_.quiet && stderr_is_terminal());
   const Result<fusion::ReplayResult> replayed = fusion::replay(
       slam, steps,
@@ -181,9 +185,13 @@ int FusionCommand::run_mapping() const {
   if (Status s = write_slam_outputs(options_.out, *svg, picture, slam, truth, report); !s) {
     return report_error(s.error());
   }
-  if (!options_.quiet)
+  if (MessageSink* sink = recording->sink()) recording->note(record_fusion_run(*sink, slam, truth));
+  if (Status s = recording->finish(); !s) return report_error(s.error());
+  if (!options_.quiet) {
     print_slam_summary("world " + world_label(), setup->type, slam, report["trajectory"],
                        options_.out, !truth.empty());
+    if (options_.record) fmt::print("recording: {}\n", options_.record->string());
+  }
   return kExitOk;
 }
 

@@ -208,6 +208,7 @@ class FusionCommand : public Command {
     double route_length_m = 9.7;                         // the thesis' route: 7.4 m + 2.3 m
     double duration_s = 600.0;                           // --world: the mapping run's time limit
     std::optional<std::filesystem::path> save_sequence;  // --world: the run as a TUM folder
+    std::optional<std::filesystem::path> record;  // --world, --sequence: the run as MCAP
     // --world: the neck sweeps while the robot drives, fast enough that a firing-field visit
     // (0.3 m at 0.3 m/s) sees several directions, as wide as the teach stage's five capture
     // angles (mission/teach_and_repeat.hpp). Ours; the period is measured in decision 0010.

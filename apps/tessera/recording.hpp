@@ -3,7 +3,6 @@
 // The file appears only when the run and the recording both succeed (McapWriter writes to a
 // temporary name); a failed run leaves nothing.
 #include <CLI/CLI.hpp>
-
 #include <filesystem>
 #include <optional>
 

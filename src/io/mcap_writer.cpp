@@ -246,14 +246,14 @@ Status McapWriter::finish() {
   };
   std::string schemas;
   for (std::size_t i = 0; i < schemas_.size(); ++i) {
-    schemas += schema_record(static_cast<std::uint16_t>(i + 1), schemas_[i].name,
-                             schemas_[i].definition);
+    schemas +=
+        schema_record(static_cast<std::uint16_t>(i + 1), schemas_[i].name, schemas_[i].definition);
   }
   group(kSchema, schemas);
   std::string channels;
   for (std::size_t i = 0; i < channels_.size(); ++i) {
-    channels += channel_record(static_cast<std::uint16_t>(i), channels_[i].schema_id,
-                               channels_[i].topic);
+    channels +=
+        channel_record(static_cast<std::uint16_t>(i), channels_[i].schema_id, channels_[i].topic);
   }
   group(kChannel, channels);
   std::string stats;

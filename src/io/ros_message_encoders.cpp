@@ -57,7 +57,8 @@ const std::map<std::string, std::string, std::less<>>& definitions() {
       {"geometry_msgs/Point", "float64 x\nfloat64 y\nfloat64 z\n"},
       {"geometry_msgs/Vector3", "float64 x\nfloat64 y\nfloat64 z\n"},
       {"geometry_msgs/Quaternion", "float64 x\nfloat64 y\nfloat64 z\nfloat64 w\n"},
-      {"geometry_msgs/Pose", "geometry_msgs/Point position\ngeometry_msgs/Quaternion orientation\n"},
+      {"geometry_msgs/Pose",
+       "geometry_msgs/Point position\ngeometry_msgs/Quaternion orientation\n"},
       {"geometry_msgs/PoseStamped", "std_msgs/Header header\ngeometry_msgs/Pose pose\n"},
       {"geometry_msgs/PoseWithCovariance", "geometry_msgs/Pose pose\nfloat64[36] covariance\n"},
       {"geometry_msgs/Twist", "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n"},
@@ -163,8 +164,8 @@ std::vector<std::uint8_t> encode_cdr(const OdometryMessage& m) {
   header(w, m.header);
   w.string(m.child_frame_id);
   pose(w, m.pose);
-  zeros_f64(w, 36);         // pose covariance
-  zeros_f64(w, 6 + 36);     // twist and its covariance
+  zeros_f64(w, 36);      // pose covariance
+  zeros_f64(w, 6 + 36);  // twist and its covariance
   return std::move(w).take();
 }
 
@@ -221,16 +222,16 @@ std::vector<std::uint8_t> encode_cdr(const MarkerArrayMessage& m) {
     for (const RosPoint& p : k.points) point(w, p);
     w.count(k.colors.size());
     for (const RosColor& c : k.colors) color(w, c);
-    w.string("");           // texture_resource
+    w.string("");            // texture_resource
     header(w, RosHeader{});  // texture: sensor_msgs/CompressedImage, empty
     w.string("");
     w.count(0);
-    w.count(0);             // uv_coordinates
+    w.count(0);  // uv_coordinates
     w.string(k.text);
-    w.string("");           // mesh_resource
-    w.string("");           // mesh_file: filename, data
+    w.string("");  // mesh_resource
+    w.string("");  // mesh_file: filename, data
     w.count(0);
-    w.u8(0);                // mesh_use_embedded_materials
+    w.u8(0);  // mesh_use_embedded_materials
   }
   return std::move(w).take();
 }

@@ -60,7 +60,7 @@ Status BobRecorder::step(const BobResult& so_far) {
   map.origin = planar_transform(grid_.origin().x, grid_.origin().y, 0.0);
   map.data.resize(so_far.sensed.size());
   for (std::size_t i = 0; i < so_far.sensed.size(); ++i) {
-    map.data[i] = so_far.sensed[i] == 0 ? std::int8_t{-1}
+    map.data[i] = so_far.sensed[i] == 0     ? std::int8_t{-1}
                   : so_far.occupied[i] != 0 ? std::int8_t{100}
                                             : std::int8_t{0};
   }
@@ -83,7 +83,8 @@ Status BobRecorder::finish(const BobResult& final_run) {
 Status BobRecorder::publish_path(const BobResult& run, std::int64_t t_ns) {
   const std::vector<Pose2> poses = route_poses(run, grid_);
   std::vector<std::int64_t> stamps(poses.size());
-  for (std::size_t i = 0; i < stamps.size(); ++i) stamps[i] = static_cast<std::int64_t>(i) * kStepNs;
+  for (std::size_t i = 0; i < stamps.size(); ++i)
+    stamps[i] = static_cast<std::int64_t>(i) * kStepNs;
   path_published_ = t_ns / kStepNs;
   return sink_.publish(path_, t_ns, encode_cdr(path_message(poses, stamps, t_ns, "map")));
 }

@@ -63,8 +63,8 @@ Status ExplorationRecorder::publish_state(const ExplorationMission& mission, std
     return s;
   }
   while (paths_.size() < static_cast<std::size_t>(mission.robots())) {
-    paths_.push_back(channel_of(sink_, "/robot" + std::to_string(paths_.size()) + "/path",
-                                kRos2Path));
+    paths_.push_back(
+        channel_of(sink_, "/robot" + std::to_string(paths_.size()) + "/path", kRos2Path));
   }
   for (int r = 0; r < mission.robots(); ++r) {
     const std::vector<Pose2>& poses = mission.paths()[r];
@@ -72,7 +72,8 @@ Status ExplorationRecorder::publish_state(const ExplorationMission& mission, std
     // paths()[r] has the start and one pose per move; moves are one per step at most, so the
     // pose index is a step only for a robot that moved every step. Stamp them by index: the
     // path is a picture of where the robot went, not a timeline.
-    for (std::size_t i = 0; i < poses.size(); ++i) stamps[i] = static_cast<std::int64_t>(i) * kStepNs;
+    for (std::size_t i = 0; i < poses.size(); ++i)
+      stamps[i] = static_cast<std::int64_t>(i) * kStepNs;
     if (Status s = publish(sink_, paths_[r], t_ns, path_message(poses, stamps, t_ns, "map")); !s) {
       return s;
     }

@@ -54,8 +54,8 @@ LaserScanMessage laser_scan_message(const RangeScan& scan, std::int64_t stamp_ns
   return m;
 }
 
-TransformStampedMessage planar_transform_stamped(const Pose2& T_parent_child,
-                                                 std::int64_t stamp_ns, const std::string& parent,
+TransformStampedMessage planar_transform_stamped(const Pose2& T_parent_child, std::int64_t stamp_ns,
+                                                 const std::string& parent,
                                                  const std::string& child) {
   return {{stamp_ns, parent},
           child,

@@ -14,8 +14,8 @@ const std::string kBase = "robot0/base_link";
 const std::string kLaser = "robot0/laser";
 
 template <typename Message>
-Status publish(MessageSink& sink, std::string_view topic, std::string_view type,
-               std::int64_t t_ns, const Message& m) {
+Status publish(MessageSink& sink, std::string_view topic, std::string_view type, std::int64_t t_ns,
+               const Message& m) {
   const MessageSink::ChannelId channel = sink.channel(topic, type, ros2msg_definition(type));
   return sink.publish(channel, t_ns, encode_cdr(m));
 }

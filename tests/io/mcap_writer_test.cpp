@@ -30,8 +30,8 @@ struct Written {
 std::vector<Written> write_messages(McapWriter& writer, int n) {
   const std::string tf = ros2msg_definition(kRos2TfMessage);
   const MessageSink::ChannelId a = writer.channel("/tf", kRos2TfMessage, tf);
-  const MessageSink::ChannelId b = writer.channel("/scan", kRos2LaserScan,
-                                                  ros2msg_definition(kRos2LaserScan));
+  const MessageSink::ChannelId b =
+      writer.channel("/scan", kRos2LaserScan, ros2msg_definition(kRos2LaserScan));
   const MessageSink::ChannelId c = writer.channel("/robot1/tf", kRos2TfMessage, tf);
   EXPECT_EQ(writer.channel("/tf", kRos2TfMessage, tf), a);  // same topic and type: same channel
   std::vector<Written> out;
@@ -58,8 +58,8 @@ void expect_reads_back(const std::filesystem::path& path, const std::vector<Writ
     EXPECT_EQ(bag->topics[m.topic].serialization, "cdr") << i;
     EXPECT_EQ(m.log_time_ns, written[i].t_ns) << i;
     const auto bytes = bag->bytes(m);
-    EXPECT_TRUE(std::equal(bytes.begin(), bytes.end(), written[i].bytes.begin(),
-                           written[i].bytes.end()))
+    EXPECT_TRUE(
+        std::equal(bytes.begin(), bytes.end(), written[i].bytes.begin(), written[i].bytes.end()))
         << i;
   }
 }

@@ -82,10 +82,10 @@ TEST(RosMessageEncoders, OccupancyGridLaysOutHeaderInfoAndCells) {
 TEST(RosMessageEncoders, DefinitionsListEveryNestedTypeOnce) {
   const std::string markers = ros2msg_definition(kRos2MarkerArray);
   EXPECT_EQ(markers.rfind("visualization_msgs/Marker[] markers\n", 0), 0U);
-  for (const char* type : {"visualization_msgs/Marker", "std_msgs/Header", "builtin_interfaces/Time",
-                           "builtin_interfaces/Duration", "geometry_msgs/Pose",
-                           "geometry_msgs/Point", "std_msgs/ColorRGBA",
-                           "sensor_msgs/CompressedImage", "visualization_msgs/MeshFile"}) {
+  for (const char* type :
+       {"visualization_msgs/Marker", "std_msgs/Header", "builtin_interfaces/Time",
+        "builtin_interfaces/Duration", "geometry_msgs/Pose", "geometry_msgs/Point",
+        "std_msgs/ColorRGBA", "sensor_msgs/CompressedImage", "visualization_msgs/MeshFile"}) {
     EXPECT_EQ(occurrences(markers, std::string("\nMSG: ") + type + "\n"), 1) << type;
   }
   EXPECT_EQ(occurrences(markers, std::string(80, '=') + "\n"), occurrences(markers, "MSG: "));

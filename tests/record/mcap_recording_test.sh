@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Third-party check of --record: `tessera explore` (two lidar robots), `tessera bob` and `tessera
-# slam` (a simulated run) write MCAP files that npm's @mcap/core reads through their summary (chunk
+# Third-party check of --record: `tessera explore` (two lidar robots), `tessera bob`, `tessera
+# fusion` (a simulated run in the office) and `tessera slam` (a simulated run) write MCAP files that npm's @mcap/core reads through their summary (chunk
 # indexes, statistics, CRCs, seek by time) and whose every message @foxglove/rosmsg2-serialization
 # decodes against the ros2msg schema in the file (check_recording.cjs). Then the failures: a run
 # that fails on its input (exit 3) and a recording that cannot be created (exit 4) leave no file.
@@ -48,6 +48,9 @@ check "$work/explore.mcap" /tf /map /frontier /robot0/path /robot1/path
 "$cli" bob --out "$work/bob" --record "$work/bob.mcap" --quiet
 check "$work/bob.mcap" /map /tf /path
 
+"$cli" fusion --builtin office --duration-s 20 --out "$work/fusion" --record "$work/fusion.mcap" --quiet
+check "$work/fusion.mcap" /tf /path /odometry_path /truth_path /hex_cells /image_nodes
+
 "$cli" slam --duration-s 40 --out "$work/slam" --record "$work/rec/slam.mcap" --quiet
 check "$work/rec/slam.mcap" /scan /odom /tf /tf_static /map /path
 
@@ -70,4 +73,11 @@ set -e
 [ "$code" = 4 ] || { echo "FAIL: an unwritable --record exited $code, expected 4"; cat "$work/err"; exit 1; }
 grep -q "run.mcap\|file" "$work/err" || { echo "FAIL: the error does not name the file:"; cat "$work/err"; exit 1; }
 [ "$(wc -l < "$work/err")" = 1 ] || { echo "FAIL: the error is not one line:"; cat "$work/err"; exit 1; }
+# --record with a fusion mode that does not record: a usage error.
+set +e
+"$cli" fusion --pair "$work" --record "$work/pair.mcap" --quiet 2>"$work/err"
+code=$?
+set -e
+[ "$code" = 2 ] || { echo "FAIL: fusion --pair --record exited $code, expected 2"; cat "$work/err"; exit 1; }
+[ ! -e "$work/pair.mcap" ] || { echo "FAIL: fusion --pair --record wrote a file"; exit 1; }
 echo "PASS"

@@ -12,8 +12,8 @@ namespace {
 
 TEST(RosConversions, OccupancyGridIsRowMajorFromTheOriginWithUnknownAsMinusOne) {
   OccupancyGrid map(GridGeometry({-1.0, 2.0}, 0.5, 3, 2));
-  map.set_probability({0, 0}, 0.0);   // free
-  map.set_probability({2, 0}, 1.0);   // occupied
+  map.set_probability({0, 0}, 0.0);  // free
+  map.set_probability({2, 0}, 1.0);  // occupied
   map.set_probability({1, 1}, 0.7);
   const OccupancyGridMessage m = occupancy_grid_message(map, 5, "map");
   EXPECT_EQ(m.width, 3U);

@@ -53,6 +53,7 @@ struct RosColor {
 struct MarkerMessage {
   static constexpr std::int32_t kArrow = 0;
   static constexpr std::int32_t kLineStrip = 4;
+  static constexpr std::int32_t kLineList = 5;
   static constexpr std::int32_t kCubeList = 6;
   static constexpr std::int32_t kSphereList = 7;
   static constexpr std::int32_t kPoints = 8;

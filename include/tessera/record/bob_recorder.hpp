@@ -28,7 +28,7 @@ class BobRecorder {
   MessageSink& sink_;
   GridGeometry grid_;
   MessageSink::ChannelId map_ = 0, tf_ = 0, path_ = 0;
-  std::int64_t step_ = 0;            // steps seen
+  std::int64_t step_ = 0;             // steps seen
   std::int64_t path_published_ = -1;  // the step whose path was published last
 };
 

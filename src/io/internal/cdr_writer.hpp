@@ -11,7 +11,8 @@
 
 namespace tessera::io_internal {
 
-static_assert(std::endian::native == std::endian::little, "CdrWriter writes native bytes as little endian");
+static_assert(std::endian::native == std::endian::little,
+              "CdrWriter writes native bytes as little endian");
 
 class CdrWriter {
  public:

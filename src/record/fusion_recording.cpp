@@ -1,0 +1,113 @@
+#include "tessera/record/fusion_recording.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "tessera/grid/hex_grid.hpp"
+#include "tessera/record/ros_conversions.hpp"
+
+namespace tessera {
+namespace {
+
+const std::string kBase = "robot0/base_link";
+
+template <typename Message>
+Status publish(MessageSink& sink, std::string_view topic, std::string_view type, std::int64_t t_ns,
+               const Message& m) {
+  const MessageSink::ChannelId channel = sink.channel(topic, type, ros2msg_definition(type));
+  return sink.publish(channel, t_ns, encode_cdr(m));
+}
+
+PathMessage path_of(std::span<const StampedPose2> trajectory, std::int64_t t_ns) {
+  std::vector<Pose2> poses;
+  std::vector<std::int64_t> stamps;
+  for (const StampedPose2& p : trajectory) {
+    poses.push_back(p.pose);
+    stamps.push_back(to_ns(p.t_s));
+  }
+  return path_message(poses, stamps, t_ns, "map");
+}
+
+// The cells: one LINE_LIST of every hexagon's six edges (rotated with the cell's lattice) and one
+// SPHERE_LIST of the centres.
+MarkerArrayMessage hex_cell_markers(const fusion::HexCellMap& map, std::int64_t t_ns) {
+  MarkerMessage outlines;
+  outlines.header = {t_ns, "map"};
+  outlines.ns = "hex_cells";
+  outlines.type = MarkerMessage::kLineList;
+  outlines.scale = {0.01, 0.0, 0.0};  // line width
+  outlines.color = {0.2F, 0.5F, 0.9F, 1.0F};
+  MarkerMessage centres = outlines;
+  centres.id = 1;
+  centres.type = MarkerMessage::kSphereList;
+  centres.scale = {0.04, 0.04, 0.04};
+  const double radius_m = map.options().cell_radius_m;
+  for (const fusion::HexCell& cell : map.cells()) {
+    const auto corners = HexGrid::corners({0.0, 0.0}, radius_m);
+    const double c = std::cos(cell.lattice_rotation_rad), s = std::sin(cell.lattice_rotation_rad);
+    const auto at = [&](const Vec2& v) {
+      return RosPoint{cell.centre_m.x + c * v.x - s * v.y, cell.centre_m.y + s * v.x + c * v.y,
+                      0.0};
+    };
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      outlines.points.push_back(at(corners[k]));
+      outlines.points.push_back(at(corners[(k + 1) % corners.size()]));
+    }
+    centres.points.push_back({cell.centre_m.x, cell.centre_m.y, 0.0});
+  }
+  MarkerArrayMessage out;
+  out.markers = {outlines, centres};
+  return out;
+}
+
+}  // namespace
+
+Status record_fusion_run(MessageSink& sink, const fusion::FusionSlam& slam,
+                         std::span<const StampedPose2> truth) {
+  const std::vector<StampedPose2> corrected = slam.corrected_trajectory();
+  if (corrected.empty()) return Ok{};
+  std::int64_t last_ns = to_ns(corrected.front().t_s);
+  for (const StampedPose2& p : corrected) {
+    const std::int64_t t_ns = to_ns(p.t_s);
+    last_ns = std::max(last_ns, t_ns);
+    TfMessage tf;
+    tf.transforms.push_back(planar_transform_stamped(p.pose, t_ns, "map", kBase));
+    if (Status s = publish(sink, "/tf", kRos2TfMessage, t_ns, tf); !s) return s;
+  }
+  if (Status s = publish(sink, "/path", kRos2Path, last_ns, path_of(corrected, last_ns)); !s) {
+    return s;
+  }
+  const std::vector<StampedPose2> odometry = slam.odometry_trajectory();
+  if (Status s = publish(sink, "/odometry_path", kRos2Path, last_ns, path_of(odometry, last_ns));
+      !s) {
+    return s;
+  }
+  if (!truth.empty()) {
+    if (Status s = publish(sink, "/truth_path", kRos2Path, last_ns, path_of(truth, last_ns)); !s) {
+      return s;
+    }
+  }
+  if (Status s = publish(sink, "/hex_cells", kRos2MarkerArray, last_ns,
+                         hex_cell_markers(slam.map(), last_ns));
+      !s) {
+    return s;
+  }
+  MarkerMessage nodes;
+  nodes.header = {last_ns, "map"};
+  nodes.ns = "image_nodes";
+  nodes.type = MarkerMessage::kSphereList;
+  nodes.scale = {0.06, 0.06, 0.06};
+  nodes.color = {0.9F, 0.3F, 0.1F, 1.0F};
+  for (const fusion::StoredImageNode& n : slam.image_nodes()) {
+    if (n.graph_node >= corrected.size()) continue;
+    const Pose2& at = corrected[n.graph_node].pose;
+    nodes.points.push_back({at.x, at.y, 0.3});
+  }
+  MarkerArrayMessage node_markers;
+  node_markers.markers.push_back(nodes);
+  return publish(sink, "/image_nodes", kRos2MarkerArray, last_ns, node_markers);
+}
+
+}  // namespace tessera

@@ -20,6 +20,14 @@ packages=(
   clang libclang-rt-14-dev
 )
 
+# Tests that check tessera's files with third-party readers (npm's @mcap/core, Foxglove's message
+# decoders; tests/io/mcap_thirdparty, tests/record) run them on Node.js and install them with npm
+# into a folder outside the source tree. Debian's nodejs and npm, unless a node and an npm are
+# already there (a NodeSource nodejs bundles its own npm and conflicts with Debian's npm package).
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  packages+=(nodejs npm)
+fi
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

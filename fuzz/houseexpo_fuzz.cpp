@@ -30,9 +30,11 @@ tessera::Status read(std::string_view bytes, const std::filesystem::path& path) 
   tessera::Result<tessera::PolygonMap> plan =
       tessera::io_internal::decode_houseexpo_json(bytes, path.string());
   if (!plan) return plan.error();
-  const auto [lo, hi] = plan->bounds();
-  const double cells = ((hi.x - lo.x) / kResolutionM + 3.0) * ((hi.y - lo.y) / kResolutionM + 3.0);
-  const bool too_large = cells > static_cast<double>(tessera::io_internal::kMaxCells) * 1.01;
+  // The decoder's own grid size, so that "too large" means exactly what the decoder refuses
+  // (an estimate with other margins let a 247-million-cell grid through as "refused quickly").
+  const auto [width, height] = tessera::io_internal::houseexpo_grid_size(*plan, kResolutionM);
+  const double cells = width * height;
+  const bool too_large = !(cells <= static_cast<double>(tessera::io_internal::kMaxCells));
   if (!too_large && (cells > kMaxFuzzCells || edge_rows(*plan) > kMaxFuzzEdgeRows)) {
     return tessera::Ok{};
   }

@@ -65,16 +65,21 @@ Result<OccupancyGrid> read_houseexpo_map(const std::filesystem::path& path, doub
 
 namespace io_internal {
 
+HouseExpoGridSize houseexpo_grid_size(const PolygonMap& plan, double resolution_m) {
+  const auto [lo, hi] = plan.bounds();
+  return {std::ceil((hi.x - lo.x) / resolution_m - 1e-9) + 2.0,
+          std::ceil((hi.y - lo.y) / resolution_m - 1e-9) + 2.0};
+}
+
 Result<OccupancyGrid> decode_houseexpo_map(std::string_view text, const std::string& name,
                                            double resolution_m) {
   Result<PolygonMap> plan = decode_houseexpo_json(text, name);
   if (!plan) return plan.error();
-  const auto [lo, hi] = plan->bounds();
+  const Vec2 lo = plan->bounds().first;
   // One cell of margin on every side of the contour's bounding box.
   const Vec2 origin{lo.x - resolution_m, lo.y - resolution_m};
   // Sizes in double first: far-apart vertices would overflow an int (undefined behaviour).
-  const double width = std::ceil((hi.x - lo.x) / resolution_m - 1e-9) + 2.0;
-  const double height = std::ceil((hi.y - lo.y) / resolution_m - 1e-9) + 2.0;
+  const auto [width, height] = houseexpo_grid_size(*plan, resolution_m);
   if (!(width * height <= static_cast<double>(kMaxCells))) {
     return input_error(name + ": a " + format_double(width) + " x " + format_double(height) +
                        " grid at resolution " + format_double(resolution_m) + " m is too large");

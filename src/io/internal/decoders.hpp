@@ -27,6 +27,13 @@ namespace tessera::io_internal {
 /// read_houseexpo_json / read_houseexpo_map (io/houseexpo.hpp).
 [[nodiscard]] Result<PolygonMap> decode_houseexpo_json(std::string_view text,
                                                        const std::string& name);
+/// The grid decode_houseexpo_map rasterises `plan` on: its bounding box plus one cell of margin
+/// on every side, sizes in cells as doubles (far-apart vertices would overflow an int).
+struct HouseExpoGridSize {
+  double width = 0.0;
+  double height = 0.0;
+};
+[[nodiscard]] HouseExpoGridSize houseexpo_grid_size(const PolygonMap& plan, double resolution_m);
 [[nodiscard]] Result<OccupancyGrid> decode_houseexpo_map(std::string_view text,
                                                          const std::string& name,
                                                          double resolution_m);

@@ -76,7 +76,7 @@ BobCommand::BobCommand(CLI::App& app) {
                    "Write the monitor picture (map and route so far) after every step as "
                    "step_NNNNN.png in this folder");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
-  add_record_option(*sub_, record_);
+  add_output_stream_options(*sub_, streams_);
   sub_->add_flag("--quiet", quiet_, "No summary");
 }
 
@@ -122,11 +122,17 @@ int BobCommand::run() const {
 
   // --monitor-dir: a picture of the robot's map and route after every step (BOBMapping Figure 5a's
   // monitor), and --record: the same as ROS 2 messages; from the firmware's run with --firmware.
-  Result<Recording> recording = Recording::open(record_);
+  Result<Recording> recording = Recording::open(streams_, "bob");
   if (!recording) return report_error(recording.error());
   BobStepOutputs step_outputs(monitor_dir_, recording->sink(), truth.geometry());
   if (Status s = step_outputs.prepare(); !s) return report_error(s.error());
   options.on_step = step_outputs.on_step();
+  if (recording->live_sink()) {
+    options.on_step = [&recording, steps = options.on_step](const BobResult& so_far) {
+      if (steps) steps(so_far);
+      recording->step_done();
+    };
+  }
   // --firmware: the explorer runs as firmware on the emulated board; the host build's own run of
   // the same world and seed must give the same final map, byte for byte.
   std::optional<Result<BobResult>> firmware_result;
@@ -237,8 +243,9 @@ int BobCommand::run() const {
                  firmware_->string());
     }
     fmt::print("outputs: {}/monitor.png map.bob report.json\n", out_.string());
-    if (record_) fmt::print("recording: {}\n", record_->string());
+    if (streams_.record) fmt::print("recording: {}\n", streams_.record->string());
   }
+  recording->linger(!quiet_);
   return kExitOk;
 }
 

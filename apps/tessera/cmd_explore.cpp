@@ -57,7 +57,7 @@ ExploreCommand::ExploreCommand(CLI::App& app) {
   sub_->add_option("--max-steps", max_steps_, "Stop after this many steps (0: no limit)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
-  add_record_option(*sub_, record_);
+  add_output_stream_options(*sub_, streams_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
 }
 
@@ -87,7 +87,7 @@ int ExploreCommand::run() const {
   }
   if (auto problem = validate(options)) return report_error(usage_error(*problem));
 
-  Result<Recording> recording = Recording::open(record_);
+  Result<Recording> recording = Recording::open(streams_, "explore");
   if (!recording) return report_error(recording.error());
   std::optional<ExplorationRecorder> recorder;
   if (MessageSink* sink = recording->sink()) recorder.emplace(*sink);
@@ -102,6 +102,7 @@ int ExploreCommand::run() const {
       },
       [&](const ExplorationMission& mission) {
         if (recorder && !recording->failed()) recording->note(recorder->step(mission));
+        recording->step_done();
       });
   progress.finish();
   const double wall_s = seconds_since(t0);
@@ -168,8 +169,9 @@ int ExploreCommand::run() const {
         m.robots, m.steps, 100.0 * m.coverage, m.path_length_m, m.turns,
         r.accuracy.occupied_as_empty, m.stop_reason);
     fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt report.json\n", out_.string());
-    if (record_) fmt::print("recording: {}\n", record_->string());
+    if (streams_.record) fmt::print("recording: {}\n", streams_.record->string());
   }
+  recording->linger(!quiet_);
   return kExitOk;
 }
 

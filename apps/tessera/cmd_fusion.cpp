@@ -75,7 +75,7 @@ FusionCommand::FusionCommand(CLI::App& app) {
   sub_->add_option("--save-sequence", options_.save_sequence,
                    "--world: also write the mapping run as a TUM RGB-D sequence folder (rgb/, "
                    "depth/, groundtruth.txt, odometry.txt, neck.txt) for --sequence");
-  add_record_option(*sub_, options_.record);
+  add_output_stream_options(*sub_, options_.streams);
   sub_->add_option("--route-length-m", options_.route_length_m,
                    "Route length wanted when the goal is chosen (the thesis' route: 9.7 m)")
       ->capture_default_str()
@@ -91,8 +91,9 @@ FusionCommand::Mode FusionCommand::mode() const {
 }
 
 int FusionCommand::run() const {
-  if (options_.record && mode() != Mode::kWorld && mode() != Mode::kSequence) {
-    return report_error(usage_error("--record records a --world or --sequence run"));
+  if ((options_.streams.record || options_.streams.serve_port) && mode() != Mode::kWorld &&
+      mode() != Mode::kSequence) {
+    return report_error(usage_error("--record and --serve take a --world or --sequence run"));
   }
   switch (mode()) {
     case Mode::kPair:

@@ -48,7 +48,7 @@ int FusionCommand::run_sequence() const {
   options.seed = options_.seed;
   fusion::FusionSlam slam(options);
   const auto t0 = std::chrono::steady_clock::now();
-  Result<Recording> recording = Recording::open(options_.record);
+  Result<Recording> recording = Recording::open(options_.streams, "fusion");
   if (!recording) return report_error(recording.error());
   ProgressLine progress(!options_.quiet && stderr_is_terminal());
   const Result<fusion::ReplayResult> replayed = fusion::replay(
@@ -90,8 +90,9 @@ int FusionCommand::run_sequence() const {
   if (!options_.quiet) {
     print_slam_summary("sequence " + options_.sequence->string(), *type, slam, report["trajectory"],
                        options_.out, !truth.empty());
-    if (options_.record) fmt::print("recording: {}\n", options_.record->string());
+    if (options_.streams.record) fmt::print("recording: {}\n", options_.streams.record->string());
   }
+  recording->linger(!options_.quiet);
   return kExitOk;
 }
 

@@ -19,20 +19,45 @@
 #include "tessera/eval/relation_metric.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/carmen_log.hpp"
-#include "tessera/report/core_report.hpp"
-#include "tessera/report/eval_report.hpp"
 #include "tessera/io/g2o_file.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/relations_file.hpp"
-#include "tessera/record/slam_recording.hpp"
-#include "tessera/render/render.hpp"
 #include "tessera/io/robot_bag.hpp"
 #include "tessera/io/tum_trajectory.hpp"
+#include "tessera/record/slam_recording.hpp"
+#include "tessera/render/render.hpp"
+#include "tessera/report/core_report.hpp"
+#include "tessera/report/eval_report.hpp"
 #include "tessera/sim/laser_run.hpp"
 #include "tessera/slam/laser_slam.hpp"
 
 namespace tessera::cli {
+
+namespace {
+
+// run_laser_slam, or with a live view the same loop with the estimate published after every scan
+// and the map about once a second of wall time (a map build costs what the final one does).
+Result<slam::LaserSlamResult> run_slam(const LaserLog& log, const slam::LaserSlamOptions& options,
+                                       Recording& recording) {
+  MessageSink* live = recording.live_sink();
+  if (!live || log.scans.empty()) return slam::run_laser_slam(log, options);
+  slam::LaserSlam slam(options);
+  SlamLiveRecorder recorder(*live);
+  const int total = static_cast<int>(log.scans.size());
+  auto last_map = std::chrono::steady_clock::now();
+  for (const StampedScan& scan : log.scans) {
+    if (Status s = slam.add_scan(scan, total); !s) return s.error();
+    const bool with_map = std::chrono::steady_clock::now() - last_map > std::chrono::seconds(1);
+    if (with_map) last_map = std::chrono::steady_clock::now();
+    if (!recording.failed()) recording.note(recorder.scan(slam, scan, with_map));
+    recording.step_done();
+  }
+  return slam.finish();
+}
+
+}  // namespace
+
 SlamCommand::SlamCommand(CLI::App& app) {
   sub_ = app.add_subcommand(
       "slam",
@@ -72,7 +97,7 @@ SlamCommand::SlamCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub_->add_flag("--no-loop-closure", no_loop_closure_,
                  "Local SLAM only: scan-to-submap matching, no pose graph corrections");
-  add_record_option(*sub_, record_);
+  add_output_stream_options(*sub_, streams_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
 }
 
@@ -137,7 +162,7 @@ int SlamCommand::run() const {
     relations = std::move(read).value();
   }
 
-  Result<Recording> recording = Recording::open(record_);
+  Result<Recording> recording = Recording::open(streams_, "slam");
   if (!recording) return report_error(recording.error());
 
   ProgressLine progress(!quiet_ && stderr_is_terminal());
@@ -148,7 +173,7 @@ int SlamCommand::run() const {
                   p.scans_done, p.scans_total, "scans");
   };
   const auto t0 = std::chrono::steady_clock::now();
-  Result<slam::LaserSlamResult> result = slam::run_laser_slam(log, options);
+  Result<slam::LaserSlamResult> result = run_slam(log, options, *recording);
   progress.finish();
   const double wall_s = seconds_since(t0);
   if (!result) {
@@ -178,8 +203,7 @@ int SlamCommand::run() const {
                                                          input_name)},
                            {"slam", slam_stats_json(r, log)}};
   // A log has no random draw: the seed is null unless the run is simulated.
-  report.update(core_report({"slam",
-                             simulated ? std::optional<std::uint64_t>(seed_) : std::nullopt,
+  report.update(core_report({"slam", simulated ? std::optional<std::uint64_t>(seed_) : std::nullopt,
                              report["options"], wall_s, duration_s}));
   if (relations_) report["options"]["relations"] = relations_->string();
   if (bag_) report["bag"] = bag_report;
@@ -210,7 +234,10 @@ int SlamCommand::run() const {
       !s) {
     return report_error(s.error());
   }
-  if (MessageSink* sink = recording->sink()) recording->note(record_laser_slam(*sink, log, r));
+  if (MessageSink* file = recording->file_sink()) recording->note(record_laser_slam(*file, log, r));
+  if (MessageSink* live = recording->live_sink()) {
+    recording->note(record_laser_slam_result(*live, r));
+  }
   if (Status s = recording->finish(); !s) return report_error(s.error());
 
   if (!quiet_) {
@@ -236,8 +263,9 @@ int SlamCommand::run() const {
     }
     fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt graph.g2o report.json{}\n",
                out_.string(), simulated ? " truth.txt odometry.txt" : "");
-    if (record_) fmt::print("recording: {}\n", record_->string());
+    if (streams_.record) fmt::print("recording: {}\n", streams_.record->string());
   }
+  recording->linger(!quiet_);
   return kExitOk;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "recording.hpp"
 #include "tessera/eval/trajectory_error.hpp"
 #include "tessera/mission/bob_mission.hpp"
 #include "tessera/mission/exploration_mission.hpp"
@@ -48,7 +49,7 @@ class ExploreCommand : public Command {
   double range_noise_m_ = kDefaults.lidar.range_noise_stddev_m;
   double low_ = kDefaults.low;
   std::int64_t max_steps_ = kDefaults.max_steps;
-  std::optional<std::filesystem::path> record_;
+  OutputStreams streams_;  // --record, --serve
   bool quiet_ = false;
 };
 
@@ -112,7 +113,7 @@ class BobCommand : public Command {
   std::filesystem::path out_ = "out/bob";
   bool quiet_ = false;
   std::optional<std::filesystem::path> firmware_;
-  std::optional<std::filesystem::path> record_;
+  OutputStreams streams_;  // --record, --serve
   std::optional<std::filesystem::path> monitor_dir_;
   std::string qemu_ = "qemu-system-arm";
   double firmware_timeout_s_ = 20.0;
@@ -177,7 +178,7 @@ class SlamCommand : public Command {
   double time_offset_s_ = 0.0;
   std::optional<double> cell_m_;  // default: 0.05 m for a log, the world's cell for a simulated run
   bool no_loop_closure_ = false;
-  std::optional<std::filesystem::path> record_;
+  OutputStreams streams_;  // --record, --serve
   bool quiet_ = false;
 };
 
@@ -208,7 +209,7 @@ class FusionCommand : public Command {
     double route_length_m = 9.7;                         // the thesis' route: 7.4 m + 2.3 m
     double duration_s = 600.0;                           // --world: the mapping run's time limit
     std::optional<std::filesystem::path> save_sequence;  // --world: the run as a TUM folder
-    std::optional<std::filesystem::path> record;  // --world, --sequence: the run as MCAP
+    OutputStreams streams;  // --world, --sequence: --record, --serve
     // --world: the neck sweeps while the robot drives, fast enough that a firing-field visit
     // (0.3 m at 0.3 m/s) sees several directions, as wide as the teach stage's five capture
     // angles (mission/teach_and_repeat.hpp). Ours; the period is measured in decision 0010.

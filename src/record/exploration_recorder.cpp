@@ -1,6 +1,7 @@
 #include "tessera/record/exploration_recorder.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -92,6 +93,36 @@ Status ExplorationRecorder::publish_state(const ExplorationMission& mission, std
       cell_marker(unreachable, g, t_ns, "map", "unreachable", RosColor{0.9F, 0.1F, 0.1F, 0.9F}));
   markers.markers.push_back(cell_marker(mission.starts(), g, t_ns, "map", "starts",
                                         RosColor{0.1F, 0.4F, 1.0F, 1.0F}, 0.2));
+  // Each robot's chosen frontier cell: a sphere, the way there, and its a, d and p = a / d.
+  for (int r = 0; r < mission.robots(); ++r) {
+    const std::optional<FrontierPlan>& plan = mission.plan(r);
+    if (!plan) continue;
+    const Vec2 target = g.center_of(plan->target);
+    MarkerMessage goal = cell_marker(std::span<const Cell>(&plan->target, 1), g, t_ns, "map",
+                                     "goals", RosColor{0.1F, 0.4F, 1.0F, 1.0F}, 0.2);
+    goal.type = MarkerMessage::kSphereList;
+    goal.id = 3 * r;
+    markers.markers.push_back(goal);
+    MarkerMessage way =
+        cell_marker(plan->path, g, t_ns, "map", "goals", RosColor{0.1F, 0.4F, 1.0F, 0.6F});
+    way.type = MarkerMessage::kLineStrip;
+    way.id = 3 * r + 1;
+    way.scale = {0.3 * g.resolution_m(), 0.0, 0.0};
+    markers.markers.push_back(way);
+    MarkerMessage text;
+    text.header = {t_ns, "map"};
+    text.ns = "goals";
+    text.id = 3 * r + 2;
+    text.type = MarkerMessage::kText;
+    text.pose = planar_transform(target.x, target.y, 0.0);
+    text.scale = {0.0, 0.0, 0.3};
+    text.color = RosColor{0.0F, 0.0F, 0.0F, 1.0F};
+    char label[96];
+    std::snprintf(label, sizeof label, "robot%d -> (%d, %d) a=%d d=%d p=%.2f", r, plan->target.x,
+                  plan->target.y, plan->unknown_neighbors, plan->distance_cells, plan->priority);
+    text.text = label;
+    markers.markers.push_back(text);
+  }
   return publish(sink_, frontier_, t_ns, markers);
 }
 

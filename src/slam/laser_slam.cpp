@@ -552,22 +552,8 @@ struct LaserSlam::Impl {
     options.progress(p);
   }
 
-  Result<LaserSlamResult> finish() {
-    if (stats.loop_closures > 0) {
-      if (Status s = optimize_graph(true); !s) return s.error();
-    }
-    LaserSlamResult out;
-    out.trajectory.reserve(scans.size());
-    out.local_trajectory.reserve(scans.size());
-    for (const ScanRecord& s : scans) {
-      const Node& anchor = nodes[static_cast<std::size_t>(s.anchor_node)];
-      const Pose2 T_global =
-          global_pose(anchor.vertex) * between(anchor.T_local_robot, s.T_local_robot);
-      out.trajectory.push_back({s.t_s, T_global});
-      out.local_trajectory.push_back({s.t_s, s.T_local_robot});
-    }
-
-    const auto t_map = std::chrono::steady_clock::now();
+  // Every node's points inserted at its current global pose.
+  OccupancyGrid build_map() const {
     RangeInserter inserter(options.map_insert);
     ProbabilityGrid map;
     for (const Node& node : nodes) {
@@ -584,7 +570,31 @@ struct LaserSlam::Impl {
       }
       inserter.insert(map, T, node.points);
     }
-    out.map = map.to_occupancy_grid(2);
+    return map.to_occupancy_grid(2);
+  }
+
+  // The pose of scan `i` under the current graph: its anchor node's global pose and the local
+  // motion since that node.
+  Pose2 scan_pose(std::size_t i) const {
+    const ScanRecord& s = scans[i];
+    const Node& anchor = nodes[static_cast<std::size_t>(s.anchor_node)];
+    return global_pose(anchor.vertex) * between(anchor.T_local_robot, s.T_local_robot);
+  }
+
+  Result<LaserSlamResult> finish() {
+    if (stats.loop_closures > 0) {
+      if (Status s = optimize_graph(true); !s) return s.error();
+    }
+    LaserSlamResult out;
+    out.trajectory.reserve(scans.size());
+    out.local_trajectory.reserve(scans.size());
+    for (std::size_t i = 0; i < scans.size(); ++i) {
+      out.trajectory.push_back({scans[i].t_s, scan_pose(i)});
+      out.local_trajectory.push_back({scans[i].t_s, scans[i].T_local_robot});
+    }
+
+    const auto t_map = std::chrono::steady_clock::now();
+    out.map = build_map();
     stats.map_s = seconds_since(t_map);
 
     stats.scans = static_cast<int>(scans.size());
@@ -606,6 +616,13 @@ LaserSlam::~LaserSlam() = default;
 Status LaserSlam::add_scan(const StampedScan& scan, int scans_total) {
   return impl_->add_scan(scan, scans_total);
 }
+
+Pose2 LaserSlam::latest_pose() const {
+  TESSERA_ASSERT(!impl_->scans.empty());
+  return impl_->scan_pose(impl_->scans.size() - 1);
+}
+
+OccupancyGrid LaserSlam::current_map() const { return impl_->build_map(); }
 
 Result<LaserSlamResult> LaserSlam::finish() {
   if (impl_->scans.empty()) return input_error("laser SLAM: no scans");

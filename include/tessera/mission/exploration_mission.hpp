@@ -129,6 +129,11 @@ class ExplorationMission {
   [[nodiscard]] const std::vector<Cell>& changed_cells() const { return changed_; }
   [[nodiscard]] const std::vector<Cell>& starts() const { return starts_; }
   [[nodiscard]] Cell cell(int robot) const { return robot_at(robot).cell; }
+  /// The plan `robot` follows (its frontier target, the path there, a, d and the priority
+  /// a / d of lecture Algo 9.1), if it has one.
+  [[nodiscard]] const std::optional<FrontierPlan>& plan(int robot) const {
+    return robot_at(robot).plan;
+  }
   /// Per robot: the poses reported, start first, one per move.
   [[nodiscard]] const std::vector<std::vector<Pose2>>& paths() const { return paths_; }
   /// The robots' own trip log, summed over robots: moves made, metres driven, heading changes

@@ -16,4 +16,22 @@ namespace tessera {
 [[nodiscard]] Status record_laser_slam(MessageSink& sink, const LaserLog& log,
                                        const slam::LaserSlamResult& result);
 
+/// The end of a run for a live view that saw it scan by scan (SlamLiveRecorder): /map and /path
+/// of the final optimisation, and /tf at the last scan's final pose, stamped at the last scan.
+[[nodiscard]] Status record_laser_slam_result(MessageSink& sink,
+                                              const slam::LaserSlamResult& result);
+
+/// A laser SLAM run while it runs, for the live view: after each LaserSlam::add_scan, the same
+/// /scan, /odom and /tf (the current estimate) as record_laser_slam, and /map from
+/// LaserSlam::current_map() when the caller asks for it (it costs a map build).
+class SlamLiveRecorder {
+ public:
+  explicit SlamLiveRecorder(MessageSink& sink) : sink_(sink) {}
+  [[nodiscard]] Status scan(const slam::LaserSlam& slam, const StampedScan& scan, bool with_map);
+
+ private:
+  MessageSink& sink_;
+  bool static_sent_ = false;
+};
+
 }  // namespace tessera

@@ -208,6 +208,13 @@ class LaserSlam {
   /// Runtime error if an optimisation fails.
   [[nodiscard]] Status add_scan(const StampedScan& scan, int scans_total = 0);
 
+  /// T_map_robot of the last scan added, under the graph as optimised so far (a live view's
+  /// estimate; finish() optimises once more). Precondition: a scan was added.
+  [[nodiscard]] Pose2 latest_pose() const;
+  /// The map from every node so far at its current pose. Costs what finish()'s map costs
+  /// (LaserSlamStats::map_s): for a live view now and then, not per scan.
+  [[nodiscard]] OccupancyGrid current_map() const;
+
   /// Final optimisation, trajectory and map. Call once, after the last scan.
   [[nodiscard]] Result<LaserSlamResult> finish();
 

@@ -24,10 +24,16 @@ build: configure
 cli: configure
 	cmake --build --preset dev -j $(JOBS) --target tessera
 
-# Three lidar robots share one map of the built-in office (lecture Algo 9.1); the run is also
-# recorded as ROS 2 messages (open run.mcap in Foxglove: map, robots, paths, frontier).
+# Three lidar robots share one map of the built-in office (lecture Algo 9.1), served live: open
+# the printed address in a browser (the map growing, robots, frontier, each robot's goal and its
+# a/d priority; replay step by step) or in Foxglove; recorded as ROS 2 messages to run.mcap too.
+# The run is paced at DEMO_STEP_MS per step and the page stays up DEMO_LINGER_S seconds after it.
+DEMO_PORT ?= 0
+DEMO_STEP_MS ?= 60
+DEMO_LINGER_S ?= 30
 demo: cli
-	$(TESSERA) explore --sensor lidar --robots 3 --out $(DEMO_OUT) --record $(DEMO_OUT)/run.mcap
+	$(TESSERA) explore --sensor lidar --robots 3 --out $(DEMO_OUT) --record $(DEMO_OUT)/run.mcap \
+	  --serve $(DEMO_PORT) --step-delay-ms $(DEMO_STEP_MS) --serve-linger $(DEMO_LINGER_S)
 
 ifeq ($(CI),true)
 test: test-ci bob-firmware bob-firmware-test fuzz-smoke

@@ -18,6 +18,10 @@ packages=(
   # The fuzz preset (make fuzz, make fuzz-smoke): clang and its runtime libraries, which hold
   # libFuzzer (libclang_rt.fuzzer) and the sanitizer runtimes.
   clang libclang-rt-14-dev
+  # The live view (--serve, src/live): a WebSocket server on standalone asio (header-only).
+  libasio-dev
+  # The live page's test opens it in headless Chromium (tests/live).
+  chromium
 )
 
 # Tests that check tessera's files with third-party readers (npm's @mcap/core, Foxglove's message

@@ -91,9 +91,9 @@ FusionCommand::Mode FusionCommand::mode() const {
 }
 
 int FusionCommand::run() const {
-  if ((options_.streams.record || options_.streams.serve_port) && mode() != Mode::kWorld &&
-      mode() != Mode::kSequence) {
-    return report_error(usage_error("--record and --serve take a --world or --sequence run"));
+  if ((options_.streams.record || options_.streams.serve_port) && mode() == Mode::kPair) {
+    return report_error(usage_error("--record and --serve take a run (--world, "
+                                    "--teach-and-repeat, --sequence), not a --pair"));
   }
   switch (mode()) {
     case Mode::kPair:

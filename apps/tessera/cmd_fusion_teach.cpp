@@ -14,6 +14,8 @@
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/tum_trajectory.hpp"
 #include "tessera/mission/teach_and_repeat.hpp"
+#include "tessera/record/fusion_recording.hpp"
+#include "tessera/record/ros_conversions.hpp"
 
 namespace tessera::cli {
 
@@ -25,6 +27,9 @@ int FusionCommand::run_teach_and_repeat_table() const {
   const fusion::FeatureType type = setup->type;
 
   const int runs = options_.runs;
+  Result<Recording> recording = Recording::open(options_.streams, "fusion");
+  if (!recording) return report_error(recording.error());
+  std::int64_t recorded_until_ns = 0;  // runs are recorded one after another
   const auto t0 = std::chrono::steady_clock::now();
   ProgressLine progress(!options_.quiet && stderr_is_terminal());
   std::vector<TeachAndRepeatResult> results;
@@ -38,6 +43,12 @@ int FusionCommand::run_teach_and_repeat_table() const {
       progress.finish();
       return report_error(r.error());
     }
+    // Each run is recorded (and shown live) as soon as it ends.
+    if (MessageSink* sink = recording->sink(); sink && !recording->failed()) {
+      recording->note(record_teach_and_repeat(*sink, *r, recorded_until_ns));
+      recorded_until_ns += to_ns(r->run.duration_s) + 1'000'000'000;
+    }
+    recording->step_done();
     results.push_back(std::move(*r));
   }
   progress.finish();
@@ -88,6 +99,7 @@ int FusionCommand::run_teach_and_repeat_table() const {
   if (Status s = write_json_atomic(options_.out / "report.json", report); !s) {
     return report_error(s.error());
   }
+  if (Status s = recording->finish(); !s) return report_error(s.error());
   if (!options_.quiet) {
     for (std::size_t k = 0; k < results.size(); ++k) {
       const TeachAndRepeatRun& r = results[k].run;
@@ -104,7 +116,9 @@ int FusionCommand::run_teach_and_repeat_table() const {
     for (std::size_t k = 0; k < results.size(); ++k)
       names += fmt::format("hex_map_run{}.png ", k + 1);
     fmt::print("outputs: {}/{}report.json\n", options_.out.string(), names);
+    if (options_.streams.record) fmt::print("recording: {}\n", options_.streams.record->string());
   }
+  recording->linger(!options_.quiet);
   return kExitOk;
 }
 

@@ -20,12 +20,13 @@ Status publish(MessageSink& sink, std::string_view topic, std::string_view type,
   return sink.publish(channel, t_ns, encode_cdr(m));
 }
 
-PathMessage path_of(std::span<const StampedPose2> trajectory, std::int64_t t_ns) {
+PathMessage path_of(std::span<const StampedPose2> trajectory, std::int64_t t_ns,
+                    std::int64_t offset_ns) {
   std::vector<Pose2> poses;
   std::vector<std::int64_t> stamps;
   for (const StampedPose2& p : trajectory) {
     poses.push_back(p.pose);
-    stamps.push_back(to_ns(p.t_s));
+    stamps.push_back(to_ns(p.t_s) + offset_ns);
   }
   return path_message(poses, stamps, t_ns, "map");
 }
@@ -65,27 +66,27 @@ MarkerArrayMessage hex_cell_markers(const fusion::HexCellMap& map, std::int64_t 
 }  // namespace
 
 Status record_fusion_run(MessageSink& sink, const fusion::FusionSlam& slam,
-                         std::span<const StampedPose2> truth) {
+                         std::span<const StampedPose2> truth, std::int64_t time_offset_ns) {
   const std::vector<StampedPose2> corrected = slam.corrected_trajectory();
   if (corrected.empty()) return Ok{};
-  std::int64_t last_ns = to_ns(corrected.front().t_s);
+  std::int64_t last_ns = to_ns(corrected.front().t_s) + time_offset_ns;
   for (const StampedPose2& p : corrected) {
-    const std::int64_t t_ns = to_ns(p.t_s);
+    const std::int64_t t_ns = to_ns(p.t_s) + time_offset_ns;
     last_ns = std::max(last_ns, t_ns);
     TfMessage tf;
     tf.transforms.push_back(planar_transform_stamped(p.pose, t_ns, "map", kBase));
     if (Status s = publish(sink, "/tf", kRos2TfMessage, t_ns, tf); !s) return s;
   }
-  if (Status s = publish(sink, "/path", kRos2Path, last_ns, path_of(corrected, last_ns)); !s) {
+  if (Status s = publish(sink, "/path", kRos2Path, last_ns, path_of(corrected, last_ns, time_offset_ns)); !s) {
     return s;
   }
   const std::vector<StampedPose2> odometry = slam.odometry_trajectory();
-  if (Status s = publish(sink, "/odometry_path", kRos2Path, last_ns, path_of(odometry, last_ns));
+  if (Status s = publish(sink, "/odometry_path", kRos2Path, last_ns, path_of(odometry, last_ns, time_offset_ns));
       !s) {
     return s;
   }
   if (!truth.empty()) {
-    if (Status s = publish(sink, "/truth_path", kRos2Path, last_ns, path_of(truth, last_ns)); !s) {
+    if (Status s = publish(sink, "/truth_path", kRos2Path, last_ns, path_of(truth, last_ns, time_offset_ns)); !s) {
       return s;
     }
   }
@@ -108,6 +109,38 @@ Status record_fusion_run(MessageSink& sink, const fusion::FusionSlam& slam,
   MarkerArrayMessage node_markers;
   node_markers.markers.push_back(nodes);
   return publish(sink, "/image_nodes", kRos2MarkerArray, last_ns, node_markers);
+}
+
+}  // namespace tessera
+
+namespace tessera {
+
+Status record_teach_and_repeat(MessageSink& sink, const TeachAndRepeatResult& result,
+                               std::int64_t time_offset_ns) {
+  const TeachAndRepeatRun& run = result.run;
+  if (Status s = record_fusion_run(sink, result.slam, {}, time_offset_ns); !s) return s;
+  const std::int64_t end_ns = time_offset_ns + to_ns(run.duration_s);
+  // The estimated paths of both stages and the true one, as they were driven.
+  const auto path_through = [end_ns](const std::vector<Vec2>& points) {
+    std::vector<Pose2> poses;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Vec2 to = i + 1 < points.size() ? points[i + 1] : points[i];
+      const Vec2 from = i + 1 < points.size() ? points[i] : (i > 0 ? points[i - 1] : points[i]);
+      poses.push_back({points[i].x, points[i].y, std::atan2(to.y - from.y, to.x - from.x)});
+    }
+    const std::vector<std::int64_t> stamps(poses.size(), end_ns);
+    return path_message(poses, stamps, end_ns, "map");
+  };
+  for (const auto& [topic, points] :
+       {std::pair<std::string_view, const std::vector<Vec2>*>{"/taught_path", &run.taught_path_m},
+        {"/repeated_path", &run.repeated_path_m},
+        {"/truth_path", &run.true_path_m}}) {
+    if (points->empty()) continue;
+    if (Status s = publish(sink, topic, kRos2Path, end_ns, path_through(*points)); !s) return s;
+  }
+  TfMessage tf;
+  tf.transforms.push_back(planar_transform_stamped(run.final_pose, end_ns, "map", kBase));
+  return publish(sink, "/tf", kRos2TfMessage, end_ns, tf);
 }
 
 }  // namespace tessera

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Third-party check of --record: `tessera explore` (two lidar robots), `tessera bob`, `tessera
-# fusion` (a simulated run in the office) and `tessera slam` (a simulated run) write MCAP files that npm's @mcap/core reads through their summary (chunk
+# fusion` (a simulated run in the office, and a teach-and-repeat run) and `tessera slam` (a simulated run) write MCAP files that npm's @mcap/core reads through their summary (chunk
 # indexes, statistics, CRCs, seek by time) and whose every message @foxglove/rosmsg2-serialization
 # decodes against the ros2msg schema in the file (check_recording.cjs). Then the failures: a run
 # that fails on its input (exit 3) and a recording that cannot be created (exit 4) leave no file.
@@ -50,6 +50,10 @@ check "$work/bob.mcap" /map /tf /path
 
 "$cli" fusion --builtin office --duration-s 20 --out "$work/fusion" --record "$work/fusion.mcap" --quiet
 check "$work/fusion.mcap" /tf /path /odometry_path /truth_path /hex_cells /image_nodes
+
+"$cli" fusion --teach-and-repeat --builtin office --route-length-m 4 --seed 4 --out "$work/tr" \
+  --record "$work/tr.mcap" --quiet
+check "$work/tr.mcap" /tf /path /odometry_path /hex_cells /image_nodes /taught_path /repeated_path /truth_path
 
 "$cli" slam --duration-s 40 --out "$work/slam" --record "$work/rec/slam.mcap" --quiet
 check "$work/rec/slam.mcap" /scan /odom /tf /tf_static /map /path

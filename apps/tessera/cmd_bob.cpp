@@ -126,13 +126,7 @@ int BobCommand::run() const {
   if (!recording) return report_error(recording.error());
   BobStepOutputs step_outputs(monitor_dir_, recording->sink(), truth.geometry());
   if (Status s = step_outputs.prepare(); !s) return report_error(s.error());
-  options.on_step = step_outputs.on_step();
-  if (recording->live_sink()) {
-    options.on_step = [&recording, steps = options.on_step](const BobResult& so_far) {
-      if (steps) steps(so_far);
-      recording->step_done();
-    };
-  }
+  options.on_step = recording->paced(step_outputs.on_step());
   // --firmware: the explorer runs as firmware on the emulated board; the host build's own run of
   // the same world and seed must give the same final map, byte for byte.
   std::optional<Result<BobResult>> firmware_result;

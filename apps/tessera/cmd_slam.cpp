@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "recording.hpp"
+#include "slam_live.hpp"
 #include "slam_report.hpp"
 #include "tessera/core/angle.hpp"
 #include "tessera/eval/drift_correction.hpp"
@@ -33,30 +34,6 @@
 #include "tessera/slam/laser_slam.hpp"
 
 namespace tessera::cli {
-
-namespace {
-
-// run_laser_slam, or with a live view the same loop with the estimate published after every scan
-// and the map about once a second of wall time (a map build costs what the final one does).
-Result<slam::LaserSlamResult> run_slam(const LaserLog& log, const slam::LaserSlamOptions& options,
-                                       Recording& recording) {
-  MessageSink* live = recording.live_sink();
-  if (!live || log.scans.empty()) return slam::run_laser_slam(log, options);
-  slam::LaserSlam slam(options);
-  SlamLiveRecorder recorder(*live);
-  const int total = static_cast<int>(log.scans.size());
-  auto last_map = std::chrono::steady_clock::now();
-  for (const StampedScan& scan : log.scans) {
-    if (Status s = slam.add_scan(scan, total); !s) return s.error();
-    const bool with_map = std::chrono::steady_clock::now() - last_map > std::chrono::seconds(1);
-    if (with_map) last_map = std::chrono::steady_clock::now();
-    if (!recording.failed()) recording.note(recorder.scan(slam, scan, with_map));
-    recording.step_done();
-  }
-  return slam.finish();
-}
-
-}  // namespace
 
 SlamCommand::SlamCommand(CLI::App& app) {
   sub_ = app.add_subcommand(
@@ -173,7 +150,7 @@ int SlamCommand::run() const {
                   p.scans_done, p.scans_total, "scans");
   };
   const auto t0 = std::chrono::steady_clock::now();
-  Result<slam::LaserSlamResult> result = run_slam(log, options, *recording);
+  Result<slam::LaserSlamResult> result = run_laser_slam_served(log, options, *recording);
   progress.finish();
   const double wall_s = seconds_since(t0);
   if (!result) {

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -56,6 +57,16 @@ class Recording {
   [[nodiscard]] MessageSink* live_sink() { return server_.get(); }
   /// After each step of the run: lets the live view serve (for --step-delay-ms).
   void step_done();
+  /// `on_step` followed by step_done() when serving, else `on_step` as it is. The Recording must
+  /// outlive the callback.
+  template <typename Step>
+  [[nodiscard]] std::function<void(const Step&)> paced(std::function<void(const Step&)> on_step) {
+    if (!server_) return on_step;
+    return [this, on_step = std::move(on_step)](const Step& s) {
+      if (on_step) on_step(s);
+      step_done();
+    };
+  }
   /// Keeps the first failure of a step callback, which cannot return one; later steps are not
   /// recorded once one failed.
   void note(Status s);

@@ -1,0 +1,17 @@
+#pragma once
+// `tessera slam --serve`: the laser SLAM loop with the live view fed after every scan.
+#include "recording.hpp"
+#include "tessera/core/result.hpp"
+#include "tessera/sensors/laser_log.hpp"
+#include "tessera/slam/laser_slam.hpp"
+
+namespace tessera::cli {
+
+/// slam::run_laser_slam, or, when `recording` serves a live view, the same loop with the current
+/// estimate published after every scan (record/slam_recording.hpp's SlamLiveRecorder) and the map
+/// about once a second of wall time (a map build costs what the final one does). The results are
+/// the same either way.
+[[nodiscard]] Result<slam::LaserSlamResult> run_laser_slam_served(
+    const LaserLog& log, const slam::LaserSlamOptions& options, Recording& recording);
+
+}  // namespace tessera::cli

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Third-party checks of --serve (issue 15): npm's @foxglove/ws-protocol client decodes a map while
 # `tessera explore` runs (ws_client_check.cjs), and headless Chromium opens the live page of an
-# explore, a SLAM and a BOB run and checks the drawing (page_check.cjs). Every tessera process
+# explore, a SLAM, a BOB and a Fusion SLAM run and checks the drawing (page_check.cjs). Every tessera process
 # listens on 127.0.0.1 on a port the system picks (--serve 0; the port is read from its first
 # line) and is stopped when the test ends, however it ends. The npm packages go to a folder
 # outside the source tree. Without node/npm/chromium or the registry the test is skipped
@@ -85,6 +85,10 @@ kill "${pids[-1]}"
 
 start bob bob --out "$work/bob" --step-delay-ms 5 --serve-linger 120
 node_run "$here/page_check.cjs" "$chromium" "$port" bob "$(shot live-bob.png)" 120
+kill "${pids[-1]}"
+
+start fusion fusion --builtin office --duration-s 20 --out "$work/fusion" --serve-linger 120
+node_run "$here/page_check.cjs" "$chromium" "$port" fusion "$(shot live-fusion.png)" 120
 kill "${pids[-1]}"
 
 # A port in use: exit 4 naming it, and no outputs.

@@ -1,6 +1,6 @@
 // Opens tessera's live page in headless Chromium (npm's puppeteer-core driving Debian's
 // chromium), waits until the run finished, then checks from the DOM that a map and the robots
-// were drawn, and from a screenshot of the page that the map's and the robots' colours are on
+// (or, for fusion, the hex cells and image nodes) were drawn, and from a screenshot of the page that the map's and the robots' colours are on
 // it. Writes the screenshot to SCREENSHOT.
 // Usage: node page_check.cjs CHROMIUM PORT VIEW SCREENSHOT TIMEOUT_S
 'use strict';
@@ -36,7 +36,10 @@ const fail = (why) => { console.error(`page_check (${view}): FAIL: ${why}`); pro
     });
     if (errors.length) fail(`script errors on the page: ${errors.join('; ')}`);
     if (dom.view !== view) fail(`the server says the view is "${dom.view}", expected "${view}"`);
-    if (!(dom.mapCells > 0)) fail(`no known map cell drawn (${JSON.stringify(dom)})`);
+    // A fusion run has no occupancy grid: its map is the hex cells and image nodes (markers).
+    if (view === 'fusion' ? !(dom.markers >= 2 && dom.paths >= 2) : !(dom.mapCells > 0)) {
+      fail(`no map drawn (${JSON.stringify(dom)})`);
+    }
     if (!(dom.robots >= 1)) fail(`no robot drawn (${JSON.stringify(dom)})`);
     const png = await page.screenshot({ path: screenshot, type: 'png' });
     // Read the screenshot's pixels back through an image in the page (no PNG decoder needed).
@@ -49,7 +52,7 @@ const fail = (why) => { console.error(`page_check (${view}): FAIL: ${why}`); pro
       const g = c.getContext('2d');
       g.drawImage(img, 0, 0);
       const d = g.getImageData(0, 0, c.width, c.height).data;
-      const count = { robot: 0, occupied: 0, bobEmpty: 0, bobOccupied: 0, bobUnsensed: 0 };
+      const count = { robot: 0, occupied: 0, bobEmpty: 0, bobOccupied: 0, bobUnsensed: 0, imageNodes: 0 };
       const near = (i, r, gg, b) => Math.abs(d[i] - r) < 12 && Math.abs(d[i + 1] - gg) < 12 && Math.abs(d[i + 2] - b) < 12;
       for (let i = 0; i < d.length; i += 4) {
         if (near(i, 0x1f, 0x77, 0xb4)) ++count.robot;         // robot 0's colour (and its path)
@@ -57,12 +60,15 @@ const fail = (why) => { console.error(`page_check (${view}): FAIL: ${why}`); pro
         if (near(i, 90, 180, 80)) ++count.bobEmpty;            // Figure 5a: green empty
         if (near(i, 205, 45, 40)) ++count.bobOccupied;         // red occupied
         if (near(i, 240, 215, 60)) ++count.bobUnsensed;        // yellow not sensed
+        if (near(i, 230, 77, 26)) ++count.imageNodes;           // fusion's image nodes
       }
       return count;
     }, `data:image/png;base64,${Buffer.from(png).toString('base64')}`);
     if (colours.robot < 20) fail(`robot 0's colour is on ${colours.robot} pixels of the screenshot`);
     if (view === 'bob') {
       if (colours.bobEmpty < 200 || colours.bobOccupied < 50) fail(`Figure 5a's colours missing: ${JSON.stringify(colours)}`);
+    } else if (view === 'fusion') {
+      if (colours.imageNodes < 20) fail(`image nodes on ${colours.imageNodes} pixels of the screenshot`);
     } else if (colours.occupied < 200) {
       fail(`walls (black) on only ${colours.occupied} pixels of the screenshot`);
     }

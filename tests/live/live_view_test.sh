@@ -12,34 +12,12 @@ cli=$1
 here=$2
 shots=${3:-}
 
-skip() {
-  if [ "${CI:-}" = "true" ]; then
-    echo "FAIL: $1 (CI=true: the check must run)"
-    exit 1
-  fi
-  echo "SKIP: $1"
-  exit 77
-}
-command -v node >/dev/null && command -v npm >/dev/null || skip "node and npm are not installed"
+# shellcheck source=../support/npm_packages.sh
+. "$here/../support/npm_packages.sh"
 chromium=$(command -v chromium || true)
 [ -n "$chromium" ] || skip "chromium is not installed"
-
-npm_dir="${TMPDIR:-/tmp}/tessera-npm-live"
-packages=("@foxglove/ws-protocol@0.8.0" "ws@8.18.0" "@foxglove/rosmsg@5.0.5"
-          "@foxglove/rosmsg2-serialization@3.1.0" "puppeteer-core@24.10.0")
-installed() {
-  local p
-  for p in "${packages[@]}"; do
-    [ -f "$npm_dir/node_modules/${p%@*}/package.json" ] || return 1
-  done
-}
-if ! installed; then
-  mkdir -p "$npm_dir"
-  [ -f "$npm_dir/package.json" ] || echo '{"name":"tessera-live-check","private":true}' > "$npm_dir/package.json"
-  (cd "$npm_dir" && PUPPETEER_SKIP_DOWNLOAD=1 timeout 300 npm install --no-audit --no-fund --silent "${packages[@]}") ||
-    skip "npm install ${packages[*]} failed (registry unreachable?)"
-  installed || skip "npm install left the packages incomplete"
-fi
+npm_packages "${TMPDIR:-/tmp}/tessera-npm-live" "@foxglove/ws-protocol@0.8.0" "ws@8.18.0" \
+  "@foxglove/rosmsg@5.0.5" "@foxglove/rosmsg2-serialization@3.1.0" "puppeteer-core@24.10.0"
 
 work=$(mktemp -d)
 pids=()
@@ -50,7 +28,7 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
-node_run() { NODE_PATH="$npm_dir/node_modules" node "$@"; }
+node_run() { node "$@"; }
 
 # start NAME ARGS...: runs `tessera ARGS --serve 0 --quiet` in the background; sets $port.
 start() {

@@ -11,36 +11,14 @@ set -euo pipefail
 cli=$1
 here=$2
 
-skip() {
-  if [ "${CI:-}" = "true" ]; then
-    echo "FAIL: $1 (CI=true: the check must run)"
-    exit 1
-  fi
-  echo "SKIP: $1"
-  exit 77
-}
-command -v node >/dev/null && command -v npm >/dev/null || skip "node and npm are not installed"
-
-npm_dir="${TMPDIR:-/tmp}/tessera-npm-mcap-record"
-packages=("@mcap/core@2.2.2" "@foxglove/wasm-zstd@1.0.1" "@foxglove/rosmsg@5.0.5"
-          "@foxglove/rosmsg2-serialization@3.1.0" "@foxglove/crc@1.0.1")
-installed() {
-  local p
-  for p in "${packages[@]}"; do
-    [ -f "$npm_dir/node_modules/${p%@*}/package.json" ] || return 1
-  done
-}
-if ! installed; then
-  mkdir -p "$npm_dir"
-  [ -f "$npm_dir/package.json" ] || echo '{"name":"tessera-mcap-record-check","private":true}' > "$npm_dir/package.json"
-  (cd "$npm_dir" && timeout 300 npm install --no-audit --no-fund --silent "${packages[@]}") ||
-    skip "npm install ${packages[*]} failed (registry unreachable?)"
-  installed || skip "npm install left the packages incomplete"
-fi
+# shellcheck source=../support/npm_packages.sh
+. "$here/../support/npm_packages.sh"
+npm_packages "${TMPDIR:-/tmp}/tessera-npm-mcap-record" "@mcap/core@2.2.2" "@foxglove/wasm-zstd@1.0.1" \
+  "@foxglove/rosmsg@5.0.5" "@foxglove/rosmsg2-serialization@3.1.0" "@foxglove/crc@1.0.1"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-check() { NODE_PATH="$npm_dir/node_modules" node "$here/check_recording.cjs" "$@"; }
+check() { node "$here/check_recording.cjs" "$@"; }
 
 "$cli" explore --sensor lidar --robots 2 --out "$work/explore" --record "$work/explore.mcap" --quiet
 check "$work/explore.mcap" /tf /map /frontier /robot0/path /robot1/path

@@ -13,35 +13,15 @@ cli=$1
 src=$2
 data=${TESSERA_DATA_DIR:-$3}
 
-skip() {
-  if [ "${CI:-}" = "true" ]; then
-    echo "FAIL: $1 (CI=true: the check must run)"
-    exit 1
-  fi
-  echo "SKIP: $1"
-  exit 77
-}
+# shellcheck source=../../support/npm_packages.sh
+. "$src/tests/support/npm_packages.sh"
 
 bags=(ros2_neato_finite_state_controller ros2_neato_obstacle_avoider)
 for b in "${bags[@]}"; do
   [ -d "$data/bags/$b" ] || skip "dataset missing: $data/bags/$b (set TESSERA_DATA_DIR)"
 done
-command -v node >/dev/null && command -v npm >/dev/null || skip "node and npm are not installed"
-
-npm_dir="${TMPDIR:-/tmp}/tessera-npm-mcap-check"
-packages=("@mcap/core@2.2.2" "sql.js@1.17.0" "@foxglove/wasm-zstd@1.0.1")
-installed() {
-  [ -f "$npm_dir/node_modules/@mcap/core/package.json" ] &&
-    [ -f "$npm_dir/node_modules/sql.js/package.json" ] &&
-    [ -f "$npm_dir/node_modules/@foxglove/wasm-zstd/package.json" ]
-}
-if ! installed; then
-  mkdir -p "$npm_dir"
-  [ -f "$npm_dir/package.json" ] || echo '{"name":"tessera-mcap-check","private":true}' > "$npm_dir/package.json"
-  (cd "$npm_dir" && timeout 300 npm install --no-audit --no-fund --silent "${packages[@]}") ||
-    skip "npm install ${packages[*]} failed (registry unreachable?)"
-  installed || skip "npm install left the packages incomplete"
-fi
+npm_packages "${TMPDIR:-/tmp}/tessera-npm-mcap-check" "@mcap/core@2.2.2" "sql.js@1.17.0" \
+  "@foxglove/wasm-zstd@1.0.1"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -53,7 +33,7 @@ for i in "${!bags[@]}"; do
   folder="$data/bags/$b"
   db3=$(ls "$folder"/*.db3 | head -n 1)
   mcap="$work/$b.mcap"
-  NODE_PATH="$npm_dir/node_modules" node "$src/tests/io/mcap_thirdparty/sqlite_to_mcap.cjs" \
+  node "$src/tests/io/mcap_thirdparty/sqlite_to_mcap.cjs" \
     "$db3" "$mcap" "${compressions[$i]}"
   "$cli" info --json "$folder" > "$work/sqlite.json"
   "$cli" info --json "$mcap" > "$work/mcap.json"

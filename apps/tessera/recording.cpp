@@ -15,14 +15,10 @@ extern "C" void stop_serving(int) { g_stop_serving = 1; }
 
 }  // namespace
 
-void add_record_option(CLI::App& command, std::optional<std::filesystem::path>& record) {
-  command.add_option("--record", record,
+void add_output_stream_options(CLI::App& command, OutputStreams& streams) {
+  command.add_option("--record", streams.record,
                      "Also record the run as ROS 2 messages to this MCAP file (zstd chunks, "
                      "summary; opens in Foxglove and with the mcap tools)");
-}
-
-void add_output_stream_options(CLI::App& command, OutputStreams& streams) {
-  add_record_option(command, streams.record);
   CLI::Option* serve =
       command.add_option("--serve", streams.serve_port,
                          "Serve the run live on this port (0: any free port): a page at "
@@ -41,12 +37,6 @@ void add_output_stream_options(CLI::App& command, OutputStreams& streams) {
                   "Wait this long after each step so that a viewer can follow the run")
       ->check(CLI::Range(0, 60000))
       ->needs(serve);
-}
-
-Result<Recording> Recording::open(const std::optional<std::filesystem::path>& path) {
-  OutputStreams streams;
-  streams.record = path;
-  return open(streams, "");
 }
 
 Result<Recording> Recording::open(const OutputStreams& streams, const std::string& view) {

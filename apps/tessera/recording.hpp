@@ -29,8 +29,6 @@ struct OutputStreams {
   int step_delay_ms = 0;
 };
 
-/// Adds --record to `command`.
-void add_record_option(CLI::App& command, std::optional<std::filesystem::path>& record);
 /// Adds --record, --serve, --serve-address, --serve-linger and --step-delay-ms.
 void add_output_stream_options(CLI::App& command, OutputStreams& streams);
 
@@ -41,7 +39,6 @@ class Recording {
   /// the kind of run for the page ("explore", "slam", "bob", "fusion").
   [[nodiscard]] static Result<Recording> open(const OutputStreams& streams,
                                               const std::string& view);
-  [[nodiscard]] static Result<Recording> open(const std::optional<std::filesystem::path>& path);
 
   Recording() = default;
   Recording(Recording&&) noexcept;

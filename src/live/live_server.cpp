@@ -180,6 +180,7 @@ class LiveServer::Impl::Connection : public std::enable_shared_from_this<Connect
   }
 
   void received(std::span<const std::uint8_t> bytes) {
+    if (close_after_write_) return;  // answered or closing: the connection ends once that is out
     if (websocket_) {
       parser_.feed(bytes);
       while (auto m = parser_.next()) on_message(*m);

@@ -77,16 +77,21 @@ Status record_fusion_run(MessageSink& sink, const fusion::FusionSlam& slam,
     tf.transforms.push_back(planar_transform_stamped(p.pose, t_ns, "map", kBase));
     if (Status s = publish(sink, "/tf", kRos2TfMessage, t_ns, tf); !s) return s;
   }
-  if (Status s = publish(sink, "/path", kRos2Path, last_ns, path_of(corrected, last_ns, time_offset_ns)); !s) {
+  if (Status s =
+          publish(sink, "/path", kRos2Path, last_ns, path_of(corrected, last_ns, time_offset_ns));
+      !s) {
     return s;
   }
   const std::vector<StampedPose2> odometry = slam.odometry_trajectory();
-  if (Status s = publish(sink, "/odometry_path", kRos2Path, last_ns, path_of(odometry, last_ns, time_offset_ns));
+  if (Status s = publish(sink, "/odometry_path", kRos2Path, last_ns,
+                         path_of(odometry, last_ns, time_offset_ns));
       !s) {
     return s;
   }
   if (!truth.empty()) {
-    if (Status s = publish(sink, "/truth_path", kRos2Path, last_ns, path_of(truth, last_ns, time_offset_ns)); !s) {
+    if (Status s = publish(sink, "/truth_path", kRos2Path, last_ns,
+                           path_of(truth, last_ns, time_offset_ns));
+        !s) {
       return s;
     }
   }
@@ -110,10 +115,6 @@ Status record_fusion_run(MessageSink& sink, const fusion::FusionSlam& slam,
   node_markers.markers.push_back(nodes);
   return publish(sink, "/image_nodes", kRos2MarkerArray, last_ns, node_markers);
 }
-
-}  // namespace tessera
-
-namespace tessera {
 
 Status record_teach_and_repeat(MessageSink& sink, const TeachAndRepeatResult& result,
                                std::int64_t time_offset_ns) {

@@ -20,17 +20,6 @@ Status publish(MessageSink& sink, std::string_view topic, std::string_view type,
   return sink.publish(channel, t_ns, encode_cdr(m));
 }
 
-PathMessage path_of(std::span<const StampedPose2> trajectory, std::int64_t t_ns,
-                    std::int64_t offset_ns) {
-  std::vector<Pose2> poses;
-  std::vector<std::int64_t> stamps;
-  for (const StampedPose2& p : trajectory) {
-    poses.push_back(p.pose);
-    stamps.push_back(to_ns(p.t_s) + offset_ns);
-  }
-  return path_message(poses, stamps, t_ns, "map");
-}
-
 // The cells: one LINE_LIST of every hexagon's six edges (rotated with the cell's lattice) and one
 // SPHERE_LIST of the centres.
 MarkerArrayMessage hex_cell_markers(const fusion::HexCellMap& map, std::int64_t t_ns) {
@@ -77,20 +66,20 @@ Status record_fusion_run(MessageSink& sink, const fusion::FusionSlam& slam,
     tf.transforms.push_back(planar_transform_stamped(p.pose, t_ns, "map", kBase));
     if (Status s = publish(sink, "/tf", kRos2TfMessage, t_ns, tf); !s) return s;
   }
-  if (Status s =
-          publish(sink, "/path", kRos2Path, last_ns, path_of(corrected, last_ns, time_offset_ns));
+  if (Status s = publish(sink, "/path", kRos2Path, last_ns,
+                         path_message(corrected, last_ns, "map", time_offset_ns));
       !s) {
     return s;
   }
   const std::vector<StampedPose2> odometry = slam.odometry_trajectory();
   if (Status s = publish(sink, "/odometry_path", kRos2Path, last_ns,
-                         path_of(odometry, last_ns, time_offset_ns));
+                         path_message(odometry, last_ns, "map", time_offset_ns));
       !s) {
     return s;
   }
   if (!truth.empty()) {
     if (Status s = publish(sink, "/truth_path", kRos2Path, last_ns,
-                           path_of(truth, last_ns, time_offset_ns));
+                           path_message(truth, last_ns, "map", time_offset_ns));
         !s) {
       return s;
     }

@@ -38,6 +38,18 @@ PathMessage path_message(std::span<const Pose2> poses, std::span<const std::int6
   return m;
 }
 
+PathMessage path_message(std::span<const StampedPose2> trajectory, std::int64_t stamp_ns,
+                         const std::string& frame, std::int64_t offset_ns) {
+  PathMessage m;
+  m.header = {stamp_ns, frame};
+  m.poses.reserve(trajectory.size());
+  for (const StampedPose2& p : trajectory) {
+    m.poses.push_back(
+        {{to_ns(p.t_s) + offset_ns, frame}, planar_transform(p.pose.x, p.pose.y, p.pose.theta)});
+  }
+  return m;
+}
+
 LaserScanMessage laser_scan_message(const RangeScan& scan, std::int64_t stamp_ns,
                                     const std::string& frame) {
   LaserScanMessage m;

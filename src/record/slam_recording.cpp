@@ -45,13 +45,7 @@ Status publish_map_and_path(MessageSink& sink, const slam::LaserSlamResult& resu
       !s) {
     return s;
   }
-  std::vector<Pose2> poses;
-  std::vector<std::int64_t> stamps;
-  for (const StampedPose2& p : result.trajectory) {
-    poses.push_back(p.pose);
-    stamps.push_back(to_ns(p.t_s));
-  }
-  return publish(sink, "/path", kRos2Path, t_ns, path_message(poses, stamps, t_ns, "map"));
+  return publish(sink, "/path", kRos2Path, t_ns, path_message(result.trajectory, t_ns, "map"));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tessera/core/pose2.hpp"
+#include "tessera/core/stamped_pose2.hpp"
 #include "tessera/grid/occupancy_grid.hpp"
 #include "tessera/io/ros_message_encoders.hpp"
 #include "tessera/sensors/range_scan.hpp"
@@ -27,6 +28,11 @@ namespace tessera {
 [[nodiscard]] PathMessage path_message(std::span<const Pose2> poses,
                                        std::span<const std::int64_t> stamps_ns,
                                        std::int64_t stamp_ns, const std::string& frame);
+
+/// nav_msgs/Path through a stamped trajectory, each pose at its own stamp moved by `offset_ns`.
+[[nodiscard]] PathMessage path_message(std::span<const StampedPose2> trajectory,
+                                       std::int64_t stamp_ns, const std::string& frame,
+                                       std::int64_t offset_ns = 0);
 
 /// sensor_msgs/LaserScan of a scan in its sensor frame; ranges outside [min, max] stay as they
 /// are (a reader treats them as no return).

@@ -22,6 +22,9 @@ packages=(
   libasio-dev
   # The live page's test opens it in headless Chromium (tests/live).
   chromium
+  # Nodes and robot teams over DDS with ROS 2's names (src/net): Cyclone DDS's C library and idlc,
+  # which compiles the message IDL at build time.
+  cyclonedds-dev cyclonedds-tools
 )
 
 # Tests that check tessera's files with third-party readers (npm's @mcap/core, Foxglove's message

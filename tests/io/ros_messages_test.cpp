@@ -108,6 +108,37 @@ TEST(RosMessages, BigEndianCdrIsRead) {
   EXPECT_EQ(r->transforms[0].transform.qw, 1.0);
 }
 
+TEST(RosMessages, BigEndianCdrSequencesAreSwapped) {
+  // LaserScan: stamp, frame "" (length 1, the NUL), padding, seven float32, ranges [1.5, -2],
+  // intensities [], all big endian.
+  std::vector<std::uint8_t> bytes = {0x00, 0x00, 0x00, 0x00,  // encapsulation: CDR_BE
+                                     0x00, 0x00, 0x00, 0x03, 0x00, 0x00, 0x00, 0x04,  // stamp
+                                     0x00, 0x00, 0x00, 0x01,   // frame_id length
+                                     0x00, 0x00, 0x00, 0x00};  // NUL, pad
+  const auto be32 = [&bytes](std::uint32_t u) {
+    for (int shift = 24; shift >= 0; shift -= 8) {
+      bytes.push_back(static_cast<std::uint8_t>(u >> shift));
+    }
+  };
+  const auto be_float = [&be32](float f) {
+    std::uint32_t u = 0;
+    std::memcpy(&u, &f, 4);
+    be32(u);
+  };
+  for (int i = 0; i < 7; ++i) be_float(static_cast<float>(i));
+  be32(2);
+  be_float(1.5F);
+  be_float(-2.0F);
+  be32(0);
+  Result<LaserScanMessage> r = decode_laser_scan(bytes, RosEncoding::kCdr);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->header.stamp_ns, 3'000'000'004);
+  EXPECT_EQ(r->header.frame_id, "");
+  EXPECT_EQ(r->range_max_m, 6.0F);
+  EXPECT_EQ(r->ranges_m, (std::vector<float>{1.5F, -2.0F}));
+  EXPECT_TRUE(r->intensities.empty());
+}
+
 TEST(RosMessages, CdrStringWithoutTerminatorIsRefused) {
   std::vector<std::uint8_t> bytes = support::encode_laser_scan(sample_scan(), RosEncoding::kCdr);
   // frame_id "laser\0" starts at 4 + 8 + 4; overwrite its NUL.

@@ -5,9 +5,12 @@
 // relative to the first byte after the header. Strings are a uint32 length that counts the
 // terminating NUL, the bytes and the NUL; sequences are a uint32 count and the elements.
 // builtin_interfaces/Time is int32 sec + uint32 nanosec; std_msgs/Header has no seq in ROS 2.
+#include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "internal/message_reader_base.hpp"
@@ -36,10 +39,23 @@ class CdrReader : public MessageReaderBase {
     pos_ = 4;
   }
 
+  std::uint8_t u8(const char* what) { return aligned<std::uint8_t>(what); }
+  std::int8_t i8(const char* what) { return aligned<std::int8_t>(what); }
   std::uint32_t u32(const char* what) { return aligned<std::uint32_t>(what); }
   std::int32_t i32(const char* what) { return aligned<std::int32_t>(what); }
+  std::uint64_t u64(const char* what) { return aligned<std::uint64_t>(what); }
   float f32(const char* what) { return aligned<float>(what); }
   double f64(const char* what) { return aligned<double>(what); }
+
+  /// A bool: one byte, 0 or 1; any other value fails, as Fast CDR refuses it.
+  bool boolean(const char* what) {
+    if (ok() && remaining() > 0 && bytes_[pos_] > 1) {
+      fail(std::string(what) + ": bool of value " + std::to_string(bytes_[pos_]) +
+           " is neither 0 nor 1");
+      return false;
+    }
+    return u8(what) != 0;
+  }
 
   /// builtin_interfaces/Time as nanoseconds.
   std::int64_t stamp_ns(const char* what) {
@@ -65,23 +81,11 @@ class CdrReader : public MessageReaderBase {
     return s;
   }
 
-  std::vector<float> f32_sequence(const char* what) {
-    const std::uint32_t n = u32(what);
-    if (!ok()) return {};
-    if (n > 0 && !align(4, what)) return {};
-    if (!fits(n, 4, what)) return {};
-    std::vector<float> out(n);
-    if (n > 0) std::memcpy(out.data(), bytes_.data() + pos_, std::size_t{n} * 4);
-    if (swap_) {
-      for (float& f : out) {
-        const auto u = std::bit_cast<std::uint32_t>(f);
-        f = std::bit_cast<float>((u >> 24) | ((u >> 8) & 0xff00u) | ((u << 8) & 0xff0000u) |
-                                 (u << 24));
-      }
-    }
-    pos_ += std::size_t{n} * 4;
-    return out;
-  }
+  /// float32[], uint8[], int8[]: a uint32 count, then the values; a count that runs past the
+  /// message fails before anything is allocated.
+  std::vector<float> f32_sequence(const char* what) { return sequence<float>(what); }
+  std::vector<std::uint8_t> u8_sequence(const char* what) { return sequence<std::uint8_t>(what); }
+  std::vector<std::int8_t> i8_sequence(const char* what) { return sequence<std::int8_t>(what); }
 
   std::uint32_t sequence_count(std::size_t min_element_bytes, const char* what) {
     const std::uint32_t n = u32(what);
@@ -106,6 +110,29 @@ class CdrReader : public MessageReaderBase {
   T aligned(const char* what) {
     if (!ok() || !align(sizeof(T), what)) return T{};
     return raw<T>(what, swap_);
+  }
+
+  /// A sequence of a fixed-size type: the count, then (when there are elements) padding to the
+  /// element's alignment and the elements, swapped to native order.
+  template <typename T>
+  std::vector<T> sequence(const char* what) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const std::uint32_t n = u32(what);
+    if (!ok()) return {};
+    if (n > 0 && !align(sizeof(T), what)) return {};
+    if (!fits(n, sizeof(T), what)) return {};
+    std::vector<T> out(n);
+    if (n > 0) std::memcpy(out.data(), bytes_.data() + pos_, std::size_t{n} * sizeof(T));
+    if (swap_ && sizeof(T) > 1) {
+      for (T& v : out) {
+        unsigned char b[sizeof(T)];
+        std::memcpy(b, &v, sizeof(T));
+        std::reverse(b, b + sizeof(T));
+        std::memcpy(&v, b, sizeof(T));
+      }
+    }
+    pos_ += std::size_t{n} * sizeof(T);
+    return out;
   }
 
   bool swap_ = false;

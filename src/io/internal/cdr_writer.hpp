@@ -20,8 +20,11 @@ class CdrWriter {
 
   void u8(std::uint8_t v) { bytes_.push_back(v); }
   void i8(std::int8_t v) { bytes_.push_back(static_cast<std::uint8_t>(v)); }
+  /// A bool: one byte, 1 or 0.
+  void boolean(bool v) { u8(v ? 1 : 0); }
   void u32(std::uint32_t v) { put(v); }
   void i32(std::int32_t v) { put(v); }
+  void u64(std::uint64_t v) { put(v); }
   void f32(float v) { put(v); }
   void f64(double v) { put(v); }
   void string(std::string_view s) {

@@ -33,6 +33,17 @@ void pose(CdrWriter& w, const RosTransform& t) {
   for (const double d : {t.x_m, t.y_m, t.z_m, t.qx, t.qy, t.qz, t.qw}) w.f64(d);
 }
 
+void twist(CdrWriter& w, const RosTwist& t) {
+  for (const double d : {t.linear_x_mps, t.linear_y_mps, t.linear_z_mps, t.angular_x_radps,
+                         t.angular_y_radps, t.angular_z_radps}) {
+    w.f64(d);
+  }
+}
+
+void covariance(CdrWriter& w, const RosCovariance& c) {
+  for (const double d : c) w.f64(d);
+}
+
 void color(CdrWriter& w, const RosColor& c) {
   for (const float f : {c.r, c.g, c.b, c.a}) w.f32(f);
 }
@@ -40,10 +51,6 @@ void color(CdrWriter& w, const RosColor& c) {
 void f32_sequence(CdrWriter& w, const std::vector<float>& v) {
   w.count(v.size());
   for (const float f : v) w.f32(f);
-}
-
-void zeros_f64(CdrWriter& w, int n) {
-  for (int i = 0; i < n; ++i) w.f64(0.0);
 }
 
 // The definitions, one per type, fields only (no constants or comments), nested types by their
@@ -164,8 +171,9 @@ std::vector<std::uint8_t> encode_cdr(const OdometryMessage& m) {
   header(w, m.header);
   w.string(m.child_frame_id);
   pose(w, m.pose);
-  zeros_f64(w, 36);      // pose covariance
-  zeros_f64(w, 6 + 36);  // twist and its covariance
+  covariance(w, m.pose_covariance);
+  twist(w, m.twist);
+  covariance(w, m.twist_covariance);
   return std::move(w).take();
 }
 

@@ -14,9 +14,9 @@ Result<OdometryMessage> decode(Reader r) {
   m.header = io_internal::read_header(r);
   m.child_frame_id = r.string("child_frame_id");
   m.pose = io_internal::read_transform(r);
-  for (int i = 0; i < 36; ++i) r.f64("pose.covariance");
-  for (int i = 0; i < 6; ++i) r.f64("twist.twist");
-  for (int i = 0; i < 36; ++i) r.f64("twist.covariance");
+  m.pose_covariance = io_internal::read_covariance(r, "pose.covariance");
+  m.twist = io_internal::read_twist(r);
+  m.twist_covariance = io_internal::read_covariance(r, "twist.covariance");
   if (!r.ok()) return io_internal::decode_error(r, kOdometryType);
   return m;
 }

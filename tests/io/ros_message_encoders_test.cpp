@@ -95,5 +95,57 @@ TEST(RosMessageEncoders, DefinitionsListEveryNestedTypeOnce) {
   EXPECT_EQ(ros2msg_definition("sensor_msgs/msg/Image"), "");
 }
 
+// Field-for-field comparisons; a round trip must give back exactly what was encoded.
+void expect_same(const RosHeader& a, const RosHeader& b) {
+  EXPECT_EQ(a.stamp_ns, b.stamp_ns);
+  EXPECT_EQ(a.frame_id, b.frame_id);
+}
+
+void expect_same(const RosTransform& a, const RosTransform& b) {
+  EXPECT_EQ(a.x_m, b.x_m);
+  EXPECT_EQ(a.y_m, b.y_m);
+  EXPECT_EQ(a.z_m, b.z_m);
+  EXPECT_EQ(a.qx, b.qx);
+  EXPECT_EQ(a.qy, b.qy);
+  EXPECT_EQ(a.qz, b.qz);
+  EXPECT_EQ(a.qw, b.qw);
+}
+
+void expect_same(const RosTwist& a, const RosTwist& b) {
+  EXPECT_EQ(a.linear_x_mps, b.linear_x_mps);
+  EXPECT_EQ(a.linear_y_mps, b.linear_y_mps);
+  EXPECT_EQ(a.linear_z_mps, b.linear_z_mps);
+  EXPECT_EQ(a.angular_x_radps, b.angular_x_radps);
+  EXPECT_EQ(a.angular_y_radps, b.angular_y_radps);
+  EXPECT_EQ(a.angular_z_radps, b.angular_z_radps);
+}
+
+// Sample messages with a distinct value in every field; frames of odd lengths, so that CDR pads.
+RosCovariance sample_covariance(double scale) {
+  RosCovariance c{};
+  for (std::size_t i = 0; i < c.size(); ++i) c[i] = scale * (static_cast<double>(i) - 17.5);
+  return c;
+}
+
+RosTwist sample_twist() { return {0.4, -0.1, 0.05, 0.01, -0.02, 0.7}; }
+
+TEST(RosMessageEncoders, OdometryRoundTripsTwistAndCovariances) {
+  OdometryMessage m;
+  m.header = {-7, "odom"};
+  m.child_frame_id = "base";
+  m.pose = {1, 2, 3, 0.1, 0.2, 0.3, 0.9};
+  m.pose_covariance = sample_covariance(0.5);
+  m.twist = sample_twist();
+  m.twist_covariance = sample_covariance(-2.0);
+  Result<OdometryMessage> back = decode_odometry(encode_cdr(m), RosEncoding::kCdr);
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  expect_same(back->header, m.header);
+  EXPECT_EQ(back->child_frame_id, "base");
+  expect_same(back->pose, m.pose);
+  EXPECT_EQ(back->pose_covariance, m.pose_covariance);
+  expect_same(back->twist, m.twist);
+  EXPECT_EQ(back->twist_covariance, m.twist_covariance);
+}
+
 }  // namespace
 }  // namespace tessera

@@ -51,6 +51,28 @@ TEST_P(BothEncodings, OdometryKeepsFramesAndPose) {
   EXPECT_EQ(r->pose.qw, 0.8);
 }
 
+TEST_P(BothEncodings, OdometryKeepsTwistAndCovariances) {
+  // Written field by field here (support::encode_odometry writes them as zeros); ROS 1 and ROS 2
+  // Odometry have the same field order.
+  support::MessageWriter w(GetParam());
+  w.header({5, "odom"});
+  w.string("base_footprint");
+  w.transform({1.0, 2.0, 0.0, 0.0, 0.0, 0.6, 0.8});
+  for (int i = 0; i < 36; ++i) w.f64(i);  // pose covariance
+  for (const double d : {0.5, -0.1, 0.0, 0.0, 0.0, 0.25}) w.f64(d);
+  for (int i = 0; i < 36; ++i) w.f64(-i);  // twist covariance
+  Result<OdometryMessage> r = decode_odometry(std::move(w).take(), GetParam());
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->pose.qw, 0.8);
+  EXPECT_EQ(r->pose_covariance[0], 0.0);
+  EXPECT_EQ(r->pose_covariance[35], 35.0);
+  EXPECT_EQ(r->twist.linear_x_mps, 0.5);
+  EXPECT_EQ(r->twist.linear_y_mps, -0.1);
+  EXPECT_EQ(r->twist.angular_z_radps, 0.25);
+  EXPECT_EQ(r->twist_covariance[1], -1.0);
+  EXPECT_EQ(r->twist_covariance[35], -35.0);
+}
+
 TEST_P(BothEncodings, TfMessageKeepsEveryTransform) {
   TfMessage m;
   m.transforms.push_back({{1, "a"}, "bb", {1, 0, 0, 0, 0, 0, 1}});

@@ -1,9 +1,9 @@
 #pragma once
 // The ROS messages tessera reads from bags, decoded from either serialization: ROS 1 (bag format
 // 2.0, MCAP "ros1") or ROS 2 CDR (rosbag2 sqlite3 and MCAP "cdr"). Field layouts are those of the
-// message definitions: sensor_msgs/LaserScan, nav_msgs/Odometry, tf2_msgs/TFMessage with
-// geometry_msgs/TransformStamped. Fields tessera does not use (covariances, twist, intensities'
-// meaning) are read past but still checked for length.
+// message definitions: sensor_msgs/LaserScan, nav_msgs/Odometry (with its twist and covariances),
+// tf2_msgs/TFMessage with geometry_msgs/TransformStamped. Every field is checked for length.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -60,12 +60,27 @@ struct TfMessage {
   std::vector<TransformStampedMessage> transforms;
 };
 
-/// nav_msgs/Odometry: pose.pose is T_{header.frame_id}_{child_frame_id}; covariances and twist are
-/// skipped.
+/// geometry_msgs/Twist: linear velocity in metres per second and angular velocity in radians per
+/// second, along and about the x, y, z axes of the frame it is expressed in.
+struct RosTwist {
+  double linear_x_mps = 0.0, linear_y_mps = 0.0, linear_z_mps = 0.0;
+  double angular_x_radps = 0.0, angular_y_radps = 0.0, angular_z_radps = 0.0;
+};
+
+/// A geometry_msgs float64[36] covariance: 6x6, row-major, over (x, y, z, rotation about x, y, z)
+/// in the units of the pose or twist it belongs to.
+using RosCovariance = std::array<double, 36>;
+
+/// nav_msgs/Odometry: pose is T_{header.frame_id}_{child_frame_id}; twist is the velocity of
+/// child_frame_id expressed in child_frame_id. Covariances all zero when the source leaves them
+/// unset.
 struct OdometryMessage {
   RosHeader header;
   std::string child_frame_id;
   RosTransform pose;
+  RosCovariance pose_covariance{};
+  RosTwist twist{};
+  RosCovariance twist_covariance{};
 };
 
 /// Decoders. kInput error "<Type>: byte N: <what>" when a length runs past the message, a CDR

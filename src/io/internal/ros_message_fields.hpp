@@ -29,6 +29,27 @@ RosTransform read_transform(Reader& r) {
   return t;
 }
 
+/// geometry_msgs/Twist: Vector3 linear, Vector3 angular.
+template <typename Reader>
+RosTwist read_twist(Reader& r) {
+  RosTwist t;
+  t.linear_x_mps = r.f64("twist.linear.x");
+  t.linear_y_mps = r.f64("twist.linear.y");
+  t.linear_z_mps = r.f64("twist.linear.z");
+  t.angular_x_radps = r.f64("twist.angular.x");
+  t.angular_y_radps = r.f64("twist.angular.y");
+  t.angular_z_radps = r.f64("twist.angular.z");
+  return t;
+}
+
+/// float64[36]: a fixed-size array, no count.
+template <typename Reader>
+RosCovariance read_covariance(Reader& r, const char* what) {
+  RosCovariance c{};
+  for (double& d : c) d = r.f64(what);
+  return c;
+}
+
 /// The reader's first failure as "<type>: byte N: ...".
 template <typename Reader>
 Error decode_error(const Reader& r, std::string_view type) {

@@ -44,6 +44,17 @@ void covariance(CdrWriter& w, const RosCovariance& c) {
   for (const double d : c) w.f64(d);
 }
 
+void transform_stamped(CdrWriter& w, const TransformStampedMessage& t) {
+  header(w, t.header);
+  w.string(t.child_frame_id);
+  pose(w, t.transform);
+}
+
+void pose_stamped(CdrWriter& w, const PoseStampedMessage& p) {
+  header(w, p.header);
+  pose(w, p.pose);
+}
+
 void color(CdrWriter& w, const RosColor& c) {
   for (const float f : {c.r, c.g, c.b, c.a}) w.f32(f);
 }
@@ -180,11 +191,13 @@ std::vector<std::uint8_t> encode_cdr(const OdometryMessage& m) {
 std::vector<std::uint8_t> encode_cdr(const TfMessage& m) {
   CdrWriter w;
   w.count(m.transforms.size());
-  for (const TransformStampedMessage& t : m.transforms) {
-    header(w, t.header);
-    w.string(t.child_frame_id);
-    pose(w, t.transform);
-  }
+  for (const TransformStampedMessage& t : m.transforms) transform_stamped(w, t);
+  return std::move(w).take();
+}
+
+std::vector<std::uint8_t> encode_cdr(const TransformStampedMessage& m) {
+  CdrWriter w;
+  transform_stamped(w, m);
   return std::move(w).take();
 }
 
@@ -205,10 +218,13 @@ std::vector<std::uint8_t> encode_cdr(const PathMessage& m) {
   CdrWriter w;
   header(w, m.header);
   w.count(m.poses.size());
-  for (const PoseStampedMessage& p : m.poses) {
-    header(w, p.header);
-    pose(w, p.pose);
-  }
+  for (const PoseStampedMessage& p : m.poses) pose_stamped(w, p);
+  return std::move(w).take();
+}
+
+std::vector<std::uint8_t> encode_cdr(const PoseStampedMessage& m) {
+  CdrWriter w;
+  pose_stamped(w, m);
   return std::move(w).take();
 }
 
@@ -225,7 +241,7 @@ std::vector<std::uint8_t> encode_cdr(const MarkerArrayMessage& m) {
     point(w, k.scale);
     color(w, k.color);
     w.stamp(k.lifetime_ns);
-    w.u8(k.frame_locked ? 1 : 0);
+    w.boolean(k.frame_locked);
     w.count(k.points.size());
     for (const RosPoint& p : k.points) point(w, p);
     w.count(k.colors.size());
@@ -239,7 +255,7 @@ std::vector<std::uint8_t> encode_cdr(const MarkerArrayMessage& m) {
     w.string("");  // mesh_resource
     w.string("");  // mesh_file: filename, data
     w.count(0);
-    w.u8(0);  // mesh_use_embedded_materials
+    w.boolean(false);  // mesh_use_embedded_materials
   }
   return std::move(w).take();
 }

@@ -18,11 +18,7 @@ Result<TfMessage> decode(Reader r) {
   const std::uint32_t n = r.sequence_count(kMinTransformBytes, "transforms");
   m.transforms.reserve(n);
   for (std::uint32_t i = 0; i < n && r.ok(); ++i) {
-    TransformStampedMessage t;
-    t.header = io_internal::read_header(r);
-    t.child_frame_id = r.string("child_frame_id");
-    t.transform = io_internal::read_transform(r);
-    m.transforms.push_back(std::move(t));
+    m.transforms.push_back(io_internal::read_transform_stamped(r));
   }
   if (!r.ok()) return io_internal::decode_error(r, kTfMessageType);
   return m;

@@ -1,13 +1,20 @@
-// The CDR encoders read back with tessera's decoders (ros_messages.hpp), which read real ROS 2
-// bags; the ros2msg definitions name every nested type once. The third-party decoding of every
-// type against these definitions is tests/record/mcap_recording_test.sh.
+// The CDR encoders read back with tessera's decoders (ros_messages.hpp, which read real ROS 2
+// bags, and the CDR decoders of ros_message_encoders.hpp) field for field; the byte layout of a few
+// messages against bytes computed by hand; every truncation and every impossible count refused;
+// the ros2msg definitions name every nested type once. The third-party decoding of every type
+// against these definitions is tests/record/mcap_recording_test.sh.
 #include "tessera/io/ros_message_encoders.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <limits>
+#include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace tessera {
 namespace {
@@ -111,6 +118,19 @@ void expect_same(const RosTransform& a, const RosTransform& b) {
   EXPECT_EQ(a.qw, b.qw);
 }
 
+void expect_same(const RosPoint& a, const RosPoint& b) {
+  EXPECT_EQ(a.x_m, b.x_m);
+  EXPECT_EQ(a.y_m, b.y_m);
+  EXPECT_EQ(a.z_m, b.z_m);
+}
+
+void expect_same(const RosColor& a, const RosColor& b) {
+  EXPECT_EQ(a.r, b.r);
+  EXPECT_EQ(a.g, b.g);
+  EXPECT_EQ(a.b, b.b);
+  EXPECT_EQ(a.a, b.a);
+}
+
 void expect_same(const RosTwist& a, const RosTwist& b) {
   EXPECT_EQ(a.linear_x_mps, b.linear_x_mps);
   EXPECT_EQ(a.linear_y_mps, b.linear_y_mps);
@@ -118,6 +138,35 @@ void expect_same(const RosTwist& a, const RosTwist& b) {
   EXPECT_EQ(a.angular_x_radps, b.angular_x_radps);
   EXPECT_EQ(a.angular_y_radps, b.angular_y_radps);
   EXPECT_EQ(a.angular_z_radps, b.angular_z_radps);
+}
+
+void expect_same(const TransformStampedMessage& a, const TransformStampedMessage& b) {
+  expect_same(a.header, b.header);
+  EXPECT_EQ(a.child_frame_id, b.child_frame_id);
+  expect_same(a.transform, b.transform);
+}
+
+void expect_same(const PoseStampedMessage& a, const PoseStampedMessage& b) {
+  expect_same(a.header, b.header);
+  expect_same(a.pose, b.pose);
+}
+
+void expect_same(const MarkerMessage& a, const MarkerMessage& b) {
+  expect_same(a.header, b.header);
+  EXPECT_EQ(a.ns, b.ns);
+  EXPECT_EQ(a.id, b.id);
+  EXPECT_EQ(a.type, b.type);
+  EXPECT_EQ(a.action, b.action);
+  expect_same(a.pose, b.pose);
+  expect_same(a.scale, b.scale);
+  expect_same(a.color, b.color);
+  EXPECT_EQ(a.lifetime_ns, b.lifetime_ns);
+  EXPECT_EQ(a.frame_locked, b.frame_locked);
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) expect_same(a.points[i], b.points[i]);
+  ASSERT_EQ(a.colors.size(), b.colors.size());
+  for (std::size_t i = 0; i < a.colors.size(); ++i) expect_same(a.colors[i], b.colors[i]);
+  EXPECT_EQ(a.text, b.text);
 }
 
 // Sample messages with a distinct value in every field; frames of odd lengths, so that CDR pads.
@@ -128,6 +177,62 @@ RosCovariance sample_covariance(double scale) {
 }
 
 RosTwist sample_twist() { return {0.4, -0.1, 0.05, 0.01, -0.02, 0.7}; }
+
+TransformStampedMessage sample_transform_stamped() {
+  return {{1'700'000'000'000'000'001, "map"}, "robot1/base_link", {1, -2, 0.5, 0.1, 0.2, 0.3, 0.9}};
+}
+
+OccupancyGridMessage sample_grid() {
+  OccupancyGridMessage m;
+  m.header = {-2'500'000'000, "team/map"};
+  m.map_load_time_ns = 1'000'000'123;
+  m.resolution_m = 0.05F;
+  m.width = 3;
+  m.height = 2;
+  m.origin = {-10.0, -5.0, 0.0, 0.0, 0.0, 0.6, 0.8};
+  m.data = {-1, 0, 100, 50, -1, 7};
+  return m;
+}
+
+PathMessage sample_path() {
+  PathMessage m;
+  m.header = {11, "map"};
+  m.poses.push_back({{12, "map"}, planar_transform(1, 2, 0.5)});
+  m.poses.push_back({{13, "odom1"}, {3, 4, 5, 0.5, 0.5, 0.5, 0.5}});
+  return m;
+}
+
+MarkerArrayMessage sample_markers() {
+  MarkerArrayMessage m;
+  MarkerMessage a;
+  a.header = {99, "map"};
+  a.ns = "frontiers";
+  a.id = -3;
+  a.type = MarkerMessage::kLineStrip;
+  a.action = MarkerMessage::kAdd;
+  a.pose = planar_transform(0.5, 0.25, 1.0);
+  a.scale = {0.1, 0.2, 0.3};
+  a.color = {0.1F, 0.2F, 0.3F, 0.4F};
+  a.lifetime_ns = 1'500'000'000;
+  a.frame_locked = true;
+  a.points = {{1, 2, 3}, {-4, 5.5, 0}};
+  a.colors = {{1, 0, 0, 1}, {0, 1, 0, 0.5F}};
+  a.text = "claimed by r2";
+  m.markers.push_back(a);
+  MarkerMessage b;
+  b.header = {100, "m"};
+  b.type = MarkerMessage::kText;
+  b.action = MarkerMessage::kDeleteAll;
+  m.markers.push_back(b);
+  return m;
+}
+
+TEST(RosMessageEncoders, TransformStampedRoundTripsEveryField) {
+  const TransformStampedMessage m = sample_transform_stamped();
+  Result<TransformStampedMessage> back = decode_cdr_transform_stamped(encode_cdr(m));
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  expect_same(*back, m);
+}
 
 TEST(RosMessageEncoders, OdometryRoundTripsTwistAndCovariances) {
   OdometryMessage m;
@@ -145,6 +250,261 @@ TEST(RosMessageEncoders, OdometryRoundTripsTwistAndCovariances) {
   EXPECT_EQ(back->pose_covariance, m.pose_covariance);
   expect_same(back->twist, m.twist);
   EXPECT_EQ(back->twist_covariance, m.twist_covariance);
+}
+
+TEST(RosMessageEncoders, OccupancyGridRoundTripsEveryField) {
+  const OccupancyGridMessage m = sample_grid();
+  Result<OccupancyGridMessage> back = decode_cdr_occupancy_grid(encode_cdr(m));
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  expect_same(back->header, m.header);
+  EXPECT_EQ(back->map_load_time_ns, m.map_load_time_ns);
+  EXPECT_EQ(back->resolution_m, m.resolution_m);
+  EXPECT_EQ(back->width, 3U);
+  EXPECT_EQ(back->height, 2U);
+  expect_same(back->origin, m.origin);
+  EXPECT_EQ(back->data, m.data);
+}
+
+TEST(RosMessageEncoders, PathAndPoseStampedRoundTripEveryField) {
+  const PathMessage m = sample_path();
+  Result<PathMessage> back = decode_cdr_path(encode_cdr(m));
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  expect_same(back->header, m.header);
+  ASSERT_EQ(back->poses.size(), 2U);
+  expect_same(back->poses[0], m.poses[0]);
+  expect_same(back->poses[1], m.poses[1]);
+
+  Result<PoseStampedMessage> pose = decode_cdr_pose_stamped(encode_cdr(m.poses[1]));
+  ASSERT_TRUE(pose.ok()) << pose.error().message;
+  expect_same(*pose, m.poses[1]);
+
+  Result<PathMessage> empty = decode_cdr_path(encode_cdr(PathMessage{}));
+  ASSERT_TRUE(empty.ok()) << empty.error().message;
+  EXPECT_TRUE(empty->poses.empty());
+}
+
+TEST(RosMessageEncoders, MarkerArrayRoundTripsEveryField) {
+  const MarkerArrayMessage m = sample_markers();
+  Result<MarkerArrayMessage> back = decode_cdr_marker_array(encode_cdr(m));
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  ASSERT_EQ(back->markers.size(), 2U);
+  expect_same(back->markers[0], m.markers[0]);
+  expect_same(back->markers[1], m.markers[1]);
+}
+
+// A little-endian CDR writer written again for the tests, independent of the encoders: builds
+// the fields the encoders leave out (a marker's texture, UV coordinates and mesh).
+class HandCdr {
+ public:
+  HandCdr& u8(std::uint8_t v) {
+    bytes_.push_back(v);
+    return *this;
+  }
+  HandCdr& u32(std::uint32_t v) { return put(v); }
+  HandCdr& i32(std::int32_t v) { return put(v); }
+  HandCdr& f32(float v) { return put(v); }
+  HandCdr& f64(double v) { return put(v); }
+  HandCdr& string(std::string_view s) {
+    u32(static_cast<std::uint32_t>(s.size() + 1));
+    bytes_.insert(bytes_.end(), s.begin(), s.end());
+    return u8(0);
+  }
+  HandCdr& header(std::int32_t sec, std::uint32_t nsec, std::string_view frame) {
+    return i32(sec).u32(nsec).string(frame);
+  }
+  HandCdr& pose(const RosTransform& t) {
+    for (const double d : {t.x_m, t.y_m, t.z_m, t.qx, t.qy, t.qz, t.qw}) f64(d);
+    return *this;
+  }
+  [[nodiscard]] const std::vector<std::uint8_t>& bytes() const { return bytes_; }
+
+ private:
+  template <typename T>
+  HandCdr& put(T v) {
+    while ((bytes_.size() - 4) % sizeof(T) != 0) bytes_.push_back(0);
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + sizeof(T));
+    std::memcpy(bytes_.data() + at, &v, sizeof(T));
+    return *this;
+  }
+  std::vector<std::uint8_t> bytes_{0x00, 0x01, 0x00, 0x00};
+};
+
+// One visualization_msgs/Marker of type TEXT with every field of Humble's definition; `extras`
+// fills the texture, UV coordinates and mesh that tessera's encoder writes empty.
+void hand_marker(HandCdr& w, bool extras) {
+  w.header(1, 2, "map").string("ns").i32(4).i32(MarkerMessage::kText).i32(MarkerMessage::kAdd);
+  w.pose({1, 2, 3, 0, 0, 0, 1});
+  w.f64(0.5).f64(0.5).f64(0.5);                   // scale
+  w.f32(1).f32(0.5F).f32(0.25F).f32(1);           // color
+  w.i32(3).u32(0).u8(0);                          // lifetime, frame_locked
+  w.u32(1).f64(7).f64(8).f64(9);                  // points
+  w.u32(0);                                       // colors
+  w.string(extras ? "package://t/tex.png" : "");  // texture_resource
+  // texture: header, format, data
+  w.header(extras ? 5 : 0, 0, extras ? "cam" : "").string(extras ? "png" : "");
+  w.u32(extras ? 3 : 0);  // texture.data
+  if (extras) w.u8(0x89).u8('P').u8('N');
+  w.u32(extras ? 2 : 0);  // uv_coordinates
+  if (extras) w.f32(0.5F).f32(0.25F).f32(1).f32(0);
+  w.string("hello");                               // text
+  w.string(extras ? "package://t/mesh.dae" : "");  // mesh_resource
+  w.string(extras ? "mesh.dae" : "");              // mesh_file.filename
+  w.u32(extras ? 5 : 0);                           // mesh_file.data
+  if (extras) w.u8(1).u8(2).u8(3).u8(4).u8(5);
+  w.u8(extras ? 1 : 0);  // mesh_use_embedded_materials
+}
+
+MarkerMessage hand_marker_fields() {
+  MarkerMessage k;
+  k.header = {1'000'000'002, "map"};
+  k.ns = "ns";
+  k.id = 4;
+  k.type = MarkerMessage::kText;
+  k.pose = {1, 2, 3, 0, 0, 0, 1};
+  k.scale = {0.5, 0.5, 0.5};
+  k.color = {1, 0.5F, 0.25F, 1};
+  k.lifetime_ns = 3'000'000'000;
+  k.points = {{7, 8, 9}};
+  k.text = "hello";
+  return k;
+}
+
+TEST(RosMessageEncoders, MarkerLayoutMatchesAnIndependentWriter) {
+  HandCdr w;
+  w.u32(1);
+  hand_marker(w, false);
+  EXPECT_EQ(encode_cdr(MarkerArrayMessage{{hand_marker_fields()}}), w.bytes());
+}
+
+TEST(RosMessageEncoders, MarkerDecoderStepsOverTextureUvCoordinatesAndMesh) {
+  HandCdr w;
+  w.u32(2);
+  hand_marker(w, true);
+  hand_marker(w, false);
+  Result<MarkerArrayMessage> back = decode_cdr_marker_array(w.bytes());
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  ASSERT_EQ(back->markers.size(), 2U);
+  expect_same(back->markers[0], hand_marker_fields());
+  expect_same(back->markers[1], hand_marker_fields());
+}
+
+// Each prefix of a good message (also the empty one and the encapsulation alone) is refused with
+// "<type>: byte N:".
+template <typename Decode>
+void expect_every_truncation_fails(const std::vector<std::uint8_t>& bytes, Decode decode,
+                                   std::string_view type) {
+  SCOPED_TRACE(std::string(type));
+  ASSERT_TRUE(decode(std::span<const std::uint8_t>(bytes)).ok());
+  for (std::size_t n = 0; n < bytes.size(); ++n) {
+    const auto r = decode(std::span<const std::uint8_t>(bytes.data(), n));
+    ASSERT_FALSE(r.ok()) << n << " of " << bytes.size() << " bytes";
+    EXPECT_EQ(r.error().kind, ErrorKind::kInput);
+    EXPECT_THAT(r.error().message, HasSubstr(std::string(type) + ": byte "));
+  }
+}
+
+TEST(RosMessageEncoders, EveryTruncationOfEveryDecodedMessageIsAnError) {
+  expect_every_truncation_fails(encode_cdr(sample_transform_stamped()),
+                                decode_cdr_transform_stamped, kRos2TransformStamped);
+  expect_every_truncation_fails(encode_cdr(sample_grid()), decode_cdr_occupancy_grid,
+                                kRos2OccupancyGrid);
+  expect_every_truncation_fails(encode_cdr(sample_path()), decode_cdr_path, kRos2Path);
+  expect_every_truncation_fails(encode_cdr(sample_path().poses[0]), decode_cdr_pose_stamped,
+                                kRos2PoseStamped);
+  expect_every_truncation_fails(encode_cdr(sample_markers()), decode_cdr_marker_array,
+                                kRos2MarkerArray);
+  HandCdr with_extras;
+  with_extras.u32(1);
+  hand_marker(with_extras, true);
+  expect_every_truncation_fails(with_extras.bytes(), decode_cdr_marker_array, kRos2MarkerArray);
+  OdometryMessage odom;
+  odom.twist = sample_twist();
+  expect_every_truncation_fails(
+      encode_cdr(odom),
+      [](std::span<const std::uint8_t> b) { return decode_odometry(b, RosEncoding::kCdr); },
+      kOdometryType);
+}
+
+// `bytes` with the uint32 at `offset` (counting the encapsulation) replaced by 0xFFFFFFFF.
+std::vector<std::uint8_t> with_count_max(std::vector<std::uint8_t> bytes, std::size_t offset) {
+  const std::uint32_t max = 0xFFFFFFFFu;
+  std::memcpy(bytes.data() + offset, &max, 4);
+  return bytes;
+}
+
+TEST(RosMessageEncoders, CountsOf0xFFFFFFFFAreRefusedNamingTheField) {
+  // OccupancyGrid data: 4 + stamp 8 + "map" 8 + info up to the pose 20 + padding 4 + pose 56.
+  OccupancyGridMessage grid = sample_grid();
+  grid.header.frame_id = "map";
+  Result<OccupancyGridMessage> g =
+      decode_cdr_occupancy_grid(with_count_max(encode_cdr(grid), 4 + 8 + 8 + 20 + 4 + 56));
+  ASSERT_FALSE(g.ok());
+  EXPECT_THAT(g.error().message,
+              HasSubstr("nav_msgs/msg/OccupancyGrid: byte 104: data of 4294967295 elements runs "
+                        "past the end of the message"));
+
+  // Path poses: after the path's header (stamp 8, "map" 8).
+  Result<PathMessage> p = decode_cdr_path(with_count_max(encode_cdr(sample_path()), 4 + 16));
+  ASSERT_FALSE(p.ok());
+  EXPECT_THAT(p.error().message, HasSubstr("nav_msgs/msg/Path: byte 24: poses of 4294967295"));
+
+  // Every count of a marker, at its offset in hand_marker's layout (after the encapsulation: the
+  // markers' count 0, header 4..20, ns 20..27, id 28, pose 40, scale 96, color 120, lifetime 136,
+  // frame_locked 144, points 148 and one point 152..176, colors 176, texture_resource 180..185,
+  // texture header 188..201, format 204..209, texture.data 212, uv_coordinates 216, text
+  // 220..230, mesh_resource 232..237, mesh_file.filename 240..245, mesh_file.data 248).
+  HandCdr w;
+  w.u32(1);
+  hand_marker(w, false);
+  ASSERT_EQ(w.bytes().size(), 4U + 253);
+  for (const auto& [offset, field] :
+       std::vector<std::pair<std::size_t, std::string>>{{0, "markers"},
+                                                        {148, "points"},
+                                                        {176, "colors"},
+                                                        {212, "texture.data"},
+                                                        {216, "uv_coordinates"},
+                                                        {248, "mesh_file.data"}}) {
+    Result<MarkerArrayMessage> m = decode_cdr_marker_array(with_count_max(w.bytes(), 4 + offset));
+    ASSERT_FALSE(m.ok()) << field;
+    EXPECT_THAT(m.error().message, HasSubstr(field + " of 4294967295 elements runs past")) << field;
+  }
+}
+
+TEST(RosMessageEncoders, NewDefinitionsListEveryNestedTypeOnce) {
+  struct Expected {
+    std::string_view type;
+    std::string first_line;
+    std::vector<std::string> nested;
+  };
+  const std::vector<std::string> header = {"std_msgs/Header", "builtin_interfaces/Time"};
+  const std::vector<std::string> pose = {"geometry_msgs/Pose", "geometry_msgs/Point",
+                                         "geometry_msgs/Quaternion"};
+  const auto join = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  const std::vector<Expected> types = {
+      {kRos2TransformStamped, "std_msgs/Header header\n",
+       join(header,
+            {"geometry_msgs/Transform", "geometry_msgs/Vector3", "geometry_msgs/Quaternion"})},
+      {kRos2PoseStamped, "std_msgs/Header header\n", join(header, pose)},
+      {kRos2Odometry, "std_msgs/Header header\n",
+       join(join(header, {"geometry_msgs/PoseWithCovariance", "geometry_msgs/TwistWithCovariance",
+                          "geometry_msgs/Twist", "geometry_msgs/Vector3"}),
+            pose)},
+  };
+  for (const Expected& e : types) {
+    SCOPED_TRACE(std::string(e.type));
+    const std::string definition = ros2msg_definition(e.type);
+    EXPECT_EQ(definition.rfind(e.first_line, 0), 0U);
+    for (const std::string& nested : e.nested) {
+      EXPECT_EQ(occurrences(definition, "\nMSG: " + nested + "\n"), 1) << nested;
+    }
+    EXPECT_EQ(occurrences(definition, "MSG: "), static_cast<int>(e.nested.size()));
+    EXPECT_EQ(occurrences(definition, std::string(80, '=') + "\n"),
+              occurrences(definition, "MSG: "));
+  }
 }
 
 }  // namespace

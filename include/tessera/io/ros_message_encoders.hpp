@@ -1,9 +1,11 @@
 #pragma once
-// The ROS 2 messages tessera writes (MCAP recordings, the live view): CDR encoders and their
-// ros2msg definitions (MCAP schema encoding "ros2msg": the type's definition, then each type it
-// uses after a line of 80 '=' and "MSG: pkg/Type"). Layouts are ROS 2 Humble's: sensor_msgs/
-// LaserScan, nav_msgs/Odometry, tf2_msgs/TFMessage (ros_messages.hpp has their structs and
-// decoders), nav_msgs/OccupancyGrid, nav_msgs/Path, visualization_msgs/MarkerArray.
+// The ROS 2 messages tessera writes (MCAP recordings, the live view): CDR encoders, CDR decoders
+// of the types ros_messages.hpp does not decode, and their ros2msg definitions (MCAP schema
+// encoding "ros2msg": the type's definition, then each type it uses after a line of 80 '=' and
+// "MSG: pkg/Type"). Layouts are ROS 2 Humble's: sensor_msgs/LaserScan, nav_msgs/Odometry,
+// tf2_msgs/TFMessage (ros_messages.hpp has their structs and decoders),
+// geometry_msgs/TransformStamped, nav_msgs/OccupancyGrid, nav_msgs/Path,
+// geometry_msgs/PoseStamped, visualization_msgs/MarkerArray.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -49,7 +51,7 @@ struct RosColor {
 };
 
 /// visualization_msgs/Marker: the fields tessera fills (texture, UV coordinates and mesh are
-/// written empty).
+/// written empty, and read past by the decoder).
 struct MarkerMessage {
   static constexpr std::int32_t kArrow = 0;
   static constexpr std::int32_t kLineStrip = 4;
@@ -85,17 +87,36 @@ struct MarkerArrayMessage {
 inline constexpr std::string_view kRos2LaserScan = "sensor_msgs/msg/LaserScan";
 inline constexpr std::string_view kRos2Odometry = "nav_msgs/msg/Odometry";
 inline constexpr std::string_view kRos2TfMessage = "tf2_msgs/msg/TFMessage";
+inline constexpr std::string_view kRos2TransformStamped = "geometry_msgs/msg/TransformStamped";
 inline constexpr std::string_view kRos2OccupancyGrid = "nav_msgs/msg/OccupancyGrid";
 inline constexpr std::string_view kRos2Path = "nav_msgs/msg/Path";
+inline constexpr std::string_view kRos2PoseStamped = "geometry_msgs/msg/PoseStamped";
 inline constexpr std::string_view kRos2MarkerArray = "visualization_msgs/msg/MarkerArray";
 
 /// CDR (little endian, with the encapsulation header) of each message.
 [[nodiscard]] std::vector<std::uint8_t> encode_cdr(const LaserScanMessage& m);
 [[nodiscard]] std::vector<std::uint8_t> encode_cdr(const OdometryMessage& m);
 [[nodiscard]] std::vector<std::uint8_t> encode_cdr(const TfMessage& m);
+[[nodiscard]] std::vector<std::uint8_t> encode_cdr(const TransformStampedMessage& m);
 [[nodiscard]] std::vector<std::uint8_t> encode_cdr(const OccupancyGridMessage& m);
 [[nodiscard]] std::vector<std::uint8_t> encode_cdr(const PathMessage& m);
+[[nodiscard]] std::vector<std::uint8_t> encode_cdr(const PoseStampedMessage& m);
 [[nodiscard]] std::vector<std::uint8_t> encode_cdr(const MarkerArrayMessage& m);
+
+/// CDR decoders (either byte order, plain CDR encapsulation only) of the messages above that
+/// ros_messages.hpp does not decode. kInput error "<kRos2* type>: byte N: <what>" when a length
+/// or count runs past the message, a string lacks its NUL, a bool is neither 0 nor 1, or the
+/// encapsulation is not plain CDR; the caller adds where the bytes came from. Bytes after the
+/// last field (a writer's padding) are ignored, as decode_laser_scan ignores them.
+[[nodiscard]] Result<TransformStampedMessage> decode_cdr_transform_stamped(
+    std::span<const std::uint8_t> bytes);
+[[nodiscard]] Result<OccupancyGridMessage> decode_cdr_occupancy_grid(
+    std::span<const std::uint8_t> bytes);
+[[nodiscard]] Result<PathMessage> decode_cdr_path(std::span<const std::uint8_t> bytes);
+[[nodiscard]] Result<PoseStampedMessage> decode_cdr_pose_stamped(
+    std::span<const std::uint8_t> bytes);
+[[nodiscard]] Result<MarkerArrayMessage> decode_cdr_marker_array(
+    std::span<const std::uint8_t> bytes);
 
 /// The ros2msg definition of one of the kRos2* types, with every type it uses; empty for a type
 /// tessera does not write.

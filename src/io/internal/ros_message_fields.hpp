@@ -50,6 +50,16 @@ RosCovariance read_covariance(Reader& r, const char* what) {
   return c;
 }
 
+/// geometry_msgs/TransformStamped: Header, string child_frame_id, Transform.
+template <typename Reader>
+TransformStampedMessage read_transform_stamped(Reader& r) {
+  TransformStampedMessage t;
+  t.header = read_header(r);
+  t.child_frame_id = r.string("child_frame_id");
+  t.transform = read_transform(r);
+  return t;
+}
+
 /// The reader's first failure as "<type>: byte N: ...".
 template <typename Reader>
 Error decode_error(const Reader& r, std::string_view type) {

@@ -1,5 +1,5 @@
 // CDR decoders of the messages ros_message_encoders.hpp declares beside their encoders: the same
-// ROS 2 Humble layouts read back with CdrReader, whose length
+// ROS 2 Humble layouts (and tessera_msgs' table there) read back with CdrReader, whose length
 // checks refuse a message cut short or corrupted on a link before anything is allocated for it.
 #include <cstdint>
 #include <span>
@@ -13,6 +13,7 @@ namespace tessera {
 namespace {
 
 using io_internal::CdrReader;
+using io_internal::read_covariance;
 using io_internal::read_header;
 using io_internal::read_transform;
 
@@ -143,6 +144,68 @@ Result<MarkerArrayMessage> decode_cdr_marker_array(std::span<const std::uint8_t>
     const std::uint32_t n = r.sequence_count(kMinMarkerBytes, "markers");
     m.markers.reserve(n);
     for (std::uint32_t i = 0; i < n && r.ok(); ++i) m.markers.push_back(read_marker(r));
+    return m;
+  });
+}
+
+Result<ClockMessage> decode_cdr_clock(std::span<const std::uint8_t> bytes) {
+  return decode<ClockMessage>(bytes, kRos2Clock,
+                              [](CdrReader& r) { return ClockMessage{r.stamp_ns("clock")}; });
+}
+
+Result<TwistMessage> decode_cdr_twist(std::span<const std::uint8_t> bytes) {
+  return decode<TwistMessage>(bytes, kRos2Twist,
+                              [](CdrReader& r) { return io_internal::read_twist(r); });
+}
+
+Result<PoseWithCovarianceStampedMessage> decode_cdr_pose_with_covariance_stamped(
+    std::span<const std::uint8_t> bytes) {
+  return decode<PoseWithCovarianceStampedMessage>(
+      bytes, kRos2PoseWithCovarianceStamped, [](CdrReader& r) {
+        PoseWithCovarianceStampedMessage m;
+        m.header = read_header(r);
+        m.pose = read_transform(r);
+        m.covariance = read_covariance(r, "pose.covariance");
+        return m;
+      });
+}
+
+Result<FrontierClaimMessage> decode_cdr_frontier_claim(std::span<const std::uint8_t> bytes) {
+  return decode<FrontierClaimMessage>(bytes, kRos2FrontierClaim, [](CdrReader& r) {
+    FrontierClaimMessage m;
+    m.header = read_header(r);
+    m.robot_id = r.string("robot_id");
+    m.claim_id = r.u32("claim_id");
+    m.target = read_point(r, "target");
+    m.radius_m = r.f32("radius_m");
+    m.path_length_m = r.f32("path_length_m");
+    m.active = r.boolean("active");
+    return m;
+  });
+}
+
+Result<RobotStatusMessage> decode_cdr_robot_status(std::span<const std::uint8_t> bytes) {
+  return decode<RobotStatusMessage>(bytes, kRos2RobotStatus, [](CdrReader& r) {
+    RobotStatusMessage m;
+    m.header = read_header(r);
+    m.robot_id = r.string("robot_id");
+    m.state = r.u8("state");
+    m.reason = r.string("reason");
+    m.pose = read_transform(r);
+    m.explored_area_m2 = r.f32("explored_area_m2");
+    m.messages_sent = r.u64("messages_sent");
+    m.bytes_sent = r.u64("bytes_sent");
+    m.messages_dropped = r.u64("messages_dropped");
+    return m;
+  });
+}
+
+Result<TeamCommandMessage> decode_cdr_team_command(std::span<const std::uint8_t> bytes) {
+  return decode<TeamCommandMessage>(bytes, kRos2TeamCommand, [](CdrReader& r) {
+    TeamCommandMessage m;
+    m.header = read_header(r);
+    m.robot_id = r.string("robot_id");
+    m.command = r.u8("command");
     return m;
   });
 }

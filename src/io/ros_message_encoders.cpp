@@ -1,6 +1,7 @@
 // CDR encoders and ros2msg definitions of the messages tessera writes (ros_message_encoders.hpp).
 // Field order and types follow the ROS 2 Humble message definitions (common_interfaces,
-// geometry2, rcl_interfaces' builtin_interfaces).
+// geometry2, rcl_interfaces' builtin_interfaces and rosgraph_msgs) and, for tessera_msgs, the
+// definitions in the table below.
 #include "tessera/io/ros_message_encoders.hpp"
 
 #include <algorithm>
@@ -111,6 +112,18 @@ const std::map<std::string, std::string, std::less<>>& definitions() {
        "string text\nstring mesh_resource\nvisualization_msgs/MeshFile mesh_file\n"
        "bool mesh_use_embedded_materials\n"},
       {"visualization_msgs/MarkerArray", "visualization_msgs/Marker[] markers\n"},
+      {"rosgraph_msgs/Clock", "builtin_interfaces/Time clock\n"},
+      {"geometry_msgs/PoseWithCovarianceStamped",
+       "std_msgs/Header header\ngeometry_msgs/PoseWithCovariance pose\n"},
+      // tessera's own: the meaning of each field is in ros_message_encoders.hpp.
+      {"tessera_msgs/FrontierClaim",
+       "std_msgs/Header header\nstring robot_id\nuint32 claim_id\ngeometry_msgs/Point target\n"
+       "float32 radius_m\nfloat32 path_length_m\nbool active\n"},
+      {"tessera_msgs/RobotStatus",
+       "std_msgs/Header header\nstring robot_id\nuint8 state\nstring reason\n"
+       "geometry_msgs/Pose pose\nfloat32 explored_area_m2\nuint64 messages_sent\n"
+       "uint64 bytes_sent\nuint64 messages_dropped\n"},
+      {"tessera_msgs/TeamCommand", "std_msgs/Header header\nstring robot_id\nuint8 command\n"},
   };
   return kDefinitions;
 }
@@ -257,6 +270,60 @@ std::vector<std::uint8_t> encode_cdr(const MarkerArrayMessage& m) {
     w.count(0);
     w.boolean(false);  // mesh_use_embedded_materials
   }
+  return std::move(w).take();
+}
+
+std::vector<std::uint8_t> encode_cdr(const ClockMessage& m) {
+  CdrWriter w;
+  w.stamp(m.clock_ns);
+  return std::move(w).take();
+}
+
+std::vector<std::uint8_t> encode_cdr(const TwistMessage& m) {
+  CdrWriter w;
+  twist(w, m);
+  return std::move(w).take();
+}
+
+std::vector<std::uint8_t> encode_cdr(const PoseWithCovarianceStampedMessage& m) {
+  CdrWriter w;
+  header(w, m.header);
+  pose(w, m.pose);
+  covariance(w, m.covariance);
+  return std::move(w).take();
+}
+
+std::vector<std::uint8_t> encode_cdr(const FrontierClaimMessage& m) {
+  CdrWriter w;
+  header(w, m.header);
+  w.string(m.robot_id);
+  w.u32(m.claim_id);
+  point(w, m.target);
+  w.f32(m.radius_m);
+  w.f32(m.path_length_m);
+  w.boolean(m.active);
+  return std::move(w).take();
+}
+
+std::vector<std::uint8_t> encode_cdr(const RobotStatusMessage& m) {
+  CdrWriter w;
+  header(w, m.header);
+  w.string(m.robot_id);
+  w.u8(m.state);
+  w.string(m.reason);
+  pose(w, m.pose);
+  w.f32(m.explored_area_m2);
+  w.u64(m.messages_sent);
+  w.u64(m.bytes_sent);
+  w.u64(m.messages_dropped);
+  return std::move(w).take();
+}
+
+std::vector<std::uint8_t> encode_cdr(const TeamCommandMessage& m) {
+  CdrWriter w;
+  header(w, m.header);
+  w.string(m.robot_id);
+  w.u8(m.command);
   return std::move(w).take();
 }
 

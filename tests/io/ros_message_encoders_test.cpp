@@ -227,6 +227,44 @@ MarkerArrayMessage sample_markers() {
   return m;
 }
 
+PoseWithCovarianceStampedMessage sample_pose_with_covariance() {
+  return {{5'000'000'001, "map"}, planar_transform(-1, 2, -0.5), sample_covariance(0.25)};
+}
+
+FrontierClaimMessage sample_claim() {
+  FrontierClaimMessage m;
+  m.header = {2'000'000'007, "map"};
+  m.robot_id = "r1";
+  m.claim_id = 7;
+  m.target = {2.0, -1.5, 0.0};
+  m.radius_m = 1.5F;
+  m.path_length_m = 12.0F;
+  m.active = true;
+  return m;
+}
+
+RobotStatusMessage sample_status() {
+  RobotStatusMessage m;
+  m.header = {3'000'000'000, "map"};
+  m.robot_id = "r1";
+  m.state = RobotStatusMessage::kFailed;
+  m.reason = "localisation lost";
+  m.pose = planar_transform(4, -3, 2);
+  m.explored_area_m2 = 123.25F;
+  m.messages_sent = 5'000'000'000ULL;  // above 32 bits
+  m.bytes_sent = 0xFEDC'BA98'7654'3210ULL;
+  m.messages_dropped = 3;
+  return m;
+}
+
+TeamCommandMessage sample_command() {
+  TeamCommandMessage m;
+  m.header = {4, "map"};
+  m.robot_id = "r2";
+  m.command = TeamCommandMessage::kReturnHome;
+  return m;
+}
+
 TEST(RosMessageEncoders, TransformStampedRoundTripsEveryField) {
   const TransformStampedMessage m = sample_transform_stamped();
   Result<TransformStampedMessage> back = decode_cdr_transform_stamped(encode_cdr(m));
@@ -290,6 +328,133 @@ TEST(RosMessageEncoders, MarkerArrayRoundTripsEveryField) {
   ASSERT_EQ(back->markers.size(), 2U);
   expect_same(back->markers[0], m.markers[0]);
   expect_same(back->markers[1], m.markers[1]);
+}
+
+TEST(RosMessageEncoders, ClockTwistAndPoseWithCovarianceRoundTripEveryField) {
+  for (const std::int64_t ns : {std::int64_t{0}, std::int64_t{1'700'000'000'123'456'789},
+                                std::int64_t{-1}, std::int64_t{-1'000'000'000}}) {
+    Result<ClockMessage> clock = decode_cdr_clock(encode_cdr(ClockMessage{ns}));
+    ASSERT_TRUE(clock.ok()) << clock.error().message;
+    EXPECT_EQ(clock->clock_ns, ns);
+  }
+
+  const TwistMessage twist = sample_twist();
+  Result<TwistMessage> t = decode_cdr_twist(encode_cdr(twist));
+  ASSERT_TRUE(t.ok()) << t.error().message;
+  expect_same(*t, twist);
+
+  const PoseWithCovarianceStampedMessage pose = sample_pose_with_covariance();
+  Result<PoseWithCovarianceStampedMessage> p =
+      decode_cdr_pose_with_covariance_stamped(encode_cdr(pose));
+  ASSERT_TRUE(p.ok()) << p.error().message;
+  expect_same(p->header, pose.header);
+  expect_same(p->pose, pose.pose);
+  EXPECT_EQ(p->covariance, pose.covariance);
+}
+
+TEST(RosMessageEncoders, TeamMessagesRoundTripEveryField) {
+  for (const bool active : {true, false}) {
+    FrontierClaimMessage m = sample_claim();
+    m.active = active;
+    Result<FrontierClaimMessage> back = decode_cdr_frontier_claim(encode_cdr(m));
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    expect_same(back->header, m.header);
+    EXPECT_EQ(back->robot_id, "r1");
+    EXPECT_EQ(back->claim_id, 7U);
+    expect_same(back->target, m.target);
+    EXPECT_EQ(back->radius_m, 1.5F);
+    EXPECT_EQ(back->path_length_m, 12.0F);
+    EXPECT_EQ(back->active, active);
+  }
+
+  const RobotStatusMessage s = sample_status();
+  Result<RobotStatusMessage> status = decode_cdr_robot_status(encode_cdr(s));
+  ASSERT_TRUE(status.ok()) << status.error().message;
+  expect_same(status->header, s.header);
+  EXPECT_EQ(status->robot_id, "r1");
+  EXPECT_EQ(status->state, RobotStatusMessage::kFailed);
+  EXPECT_EQ(status->reason, "localisation lost");
+  expect_same(status->pose, s.pose);
+  EXPECT_EQ(status->explored_area_m2, 123.25F);
+  EXPECT_EQ(status->messages_sent, 5'000'000'000ULL);
+  EXPECT_EQ(status->bytes_sent, 0xFEDC'BA98'7654'3210ULL);
+  EXPECT_EQ(status->messages_dropped, 3U);
+
+  const TeamCommandMessage c = sample_command();
+  Result<TeamCommandMessage> command = decode_cdr_team_command(encode_cdr(c));
+  ASSERT_TRUE(command.ok()) << command.error().message;
+  expect_same(command->header, c.header);
+  EXPECT_EQ(command->robot_id, "r2");
+  EXPECT_EQ(command->command, TeamCommandMessage::kReturnHome);
+}
+
+TEST(RosMessageEncoders, ClockLayoutIsSecThenNanosec) {
+  // 1'700'000'000 s = 0x6553F100, 123'456'789 ns = 0x075BCD15.
+  EXPECT_EQ(encode_cdr(ClockMessage{1'700'000'000'123'456'789}),
+            (std::vector<std::uint8_t>{0x00, 0x01, 0x00, 0x00,     // encapsulation: CDR_LE
+                                       0x00, 0xF1, 0x53, 0x65,     // sec
+                                       0x15, 0xCD, 0x5B, 0x07}));  // nanosec
+  // -1 ns is sec -1, nanosec 999'999'999 = 0x3B9AC9FF.
+  EXPECT_EQ(encode_cdr(ClockMessage{-1}),
+            (std::vector<std::uint8_t>{0x00, 0x01, 0x00, 0x00, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xC9,
+                                       0x9A, 0x3B}));
+}
+
+TEST(RosMessageEncoders, TwistLayoutIsSixFloat64) {
+  TwistMessage t;
+  t.linear_x_mps = 1.0;      // 0x3FF0000000000000
+  t.linear_y_mps = -2.0;     // 0xC000000000000000
+  t.angular_y_radps = 0.5;   // 0x3FE0000000000000
+  t.angular_z_radps = 0.25;  // 0x3FD0000000000000
+  const std::vector<std::uint8_t> expected = {
+      0x00, 0x01, 0x00, 0x00,                          // encapsulation
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xF0, 0x3F,  // linear.x
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xC0,  // linear.y
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,  // linear.z
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,  // angular.x
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xE0, 0x3F,  // angular.y
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xD0, 0x3F,  // angular.z
+  };
+  EXPECT_EQ(encode_cdr(t), expected);
+}
+
+TEST(RosMessageEncoders, FrontierClaimLayoutPadsBeforeClaimIdAndTarget) {
+  // Offsets after the encapsulation: stamp 0, frame_id 8, robot_id 16 ("r1\0" ends at 23, one
+  // byte of padding), claim_id 24, four bytes of padding, target 32, radius 56, path length 60,
+  // active 64: 65 bytes.
+  const std::vector<std::uint8_t> expected = {
+      0x00, 0x01, 0x00, 0x00,                          // encapsulation
+      0x02, 0x00, 0x00, 0x00, 0x07, 0x00, 0x00, 0x00,  // stamp: 2 s, 7 ns
+      0x04, 0x00, 0x00, 0x00, 'm',  'a',  'p',  0x00,  // frame_id
+      0x03, 0x00, 0x00, 0x00, 'r',  '1',  0x00,        // robot_id
+      0x00,                                            // padding to 4
+      0x07, 0x00, 0x00, 0x00,                          // claim_id
+      0x00, 0x00, 0x00, 0x00,                          // padding to 8
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x40,  // target.x 2.0
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0xF8, 0xBF,  // target.y -1.5
+      0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,  // target.z 0.0
+      0x00, 0x00, 0xC0, 0x3F,                          // radius_m 1.5F
+      0x00, 0x00, 0x40, 0x41,                          // path_length_m 12.0F
+      0x01,                                            // active
+  };
+  EXPECT_EQ(encode_cdr(sample_claim()), expected);
+}
+
+TEST(RosMessageEncoders, RobotStatusAlignsItsCountersToEightBytes) {
+  // After the encapsulation: stamp 0, "map" 8, "r1" 16..23, state 23, reason "" 24..29 (length
+  // 1, the NUL), pose 32..88, explored area 88..92, padding, the counters 96, 104, 112.
+  RobotStatusMessage m = sample_status();
+  m.reason = "";
+  const std::vector<std::uint8_t> bytes = encode_cdr(m);
+  ASSERT_EQ(bytes.size(), 4U + 120);
+  EXPECT_EQ(bytes[4 + 23], RobotStatusMessage::kFailed);
+  std::uint64_t sent = 0, bytes_sent = 0, dropped = 0;
+  std::memcpy(&sent, bytes.data() + 4 + 96, 8);
+  std::memcpy(&bytes_sent, bytes.data() + 4 + 104, 8);
+  std::memcpy(&dropped, bytes.data() + 4 + 112, 8);
+  EXPECT_EQ(sent, m.messages_sent);
+  EXPECT_EQ(bytes_sent, m.bytes_sent);
+  EXPECT_EQ(dropped, m.messages_dropped);
 }
 
 // A little-endian CDR writer written again for the tests, independent of the encoders: builds
@@ -418,6 +583,17 @@ TEST(RosMessageEncoders, EveryTruncationOfEveryDecodedMessageIsAnError) {
   with_extras.u32(1);
   hand_marker(with_extras, true);
   expect_every_truncation_fails(with_extras.bytes(), decode_cdr_marker_array, kRos2MarkerArray);
+  expect_every_truncation_fails(encode_cdr(ClockMessage{5}), decode_cdr_clock, kRos2Clock);
+  expect_every_truncation_fails(encode_cdr(sample_twist()), decode_cdr_twist, kRos2Twist);
+  expect_every_truncation_fails(encode_cdr(sample_pose_with_covariance()),
+                                decode_cdr_pose_with_covariance_stamped,
+                                kRos2PoseWithCovarianceStamped);
+  expect_every_truncation_fails(encode_cdr(sample_claim()), decode_cdr_frontier_claim,
+                                kRos2FrontierClaim);
+  expect_every_truncation_fails(encode_cdr(sample_status()), decode_cdr_robot_status,
+                                kRos2RobotStatus);
+  expect_every_truncation_fails(encode_cdr(sample_command()), decode_cdr_team_command,
+                                kRos2TeamCommand);
   OdometryMessage odom;
   odom.twist = sample_twist();
   expect_every_truncation_fails(
@@ -449,6 +625,12 @@ TEST(RosMessageEncoders, CountsOf0xFFFFFFFFAreRefusedNamingTheField) {
   ASSERT_FALSE(p.ok());
   EXPECT_THAT(p.error().message, HasSubstr("nav_msgs/msg/Path: byte 24: poses of 4294967295"));
 
+  // FrontierClaim robot_id, a string length.
+  Result<FrontierClaimMessage> c =
+      decode_cdr_frontier_claim(with_count_max(encode_cdr(sample_claim()), 4 + 16));
+  ASSERT_FALSE(c.ok());
+  EXPECT_THAT(c.error().message, HasSubstr("tessera_msgs/msg/FrontierClaim: byte 24: robot_id"));
+
   // Every count of a marker, at its offset in hand_marker's layout (after the encapsulation: the
   // markers' count 0, header 4..20, ns 20..27, id 28, pose 40, scale 96, color 120, lifetime 136,
   // frame_locked 144, points 148 and one point 152..176, colors 176, texture_resource 180..185,
@@ -471,6 +653,15 @@ TEST(RosMessageEncoders, CountsOf0xFFFFFFFFAreRefusedNamingTheField) {
   }
 }
 
+TEST(RosMessageEncoders, BoolOtherThanZeroOrOneIsRefused) {
+  std::vector<std::uint8_t> bytes = encode_cdr(sample_claim());
+  bytes.back() = 2;  // active
+  Result<FrontierClaimMessage> r = decode_cdr_frontier_claim(bytes);
+  ASSERT_FALSE(r.ok());
+  EXPECT_THAT(r.error().message,
+              HasSubstr("tessera_msgs/msg/FrontierClaim: byte 68: active: bool of value 2"));
+}
+
 TEST(RosMessageEncoders, NewDefinitionsListEveryNestedTypeOnce) {
   struct Expected {
     std::string_view type;
@@ -485,6 +676,10 @@ TEST(RosMessageEncoders, NewDefinitionsListEveryNestedTypeOnce) {
     return a;
   };
   const std::vector<Expected> types = {
+      {kRos2Clock, "builtin_interfaces/Time clock\n", {"builtin_interfaces/Time"}},
+      {kRos2Twist, "geometry_msgs/Vector3 linear\n", {"geometry_msgs/Vector3"}},
+      {kRos2PoseWithCovarianceStamped, "std_msgs/Header header\n",
+       join(join(header, {"geometry_msgs/PoseWithCovariance"}), pose)},
       {kRos2TransformStamped, "std_msgs/Header header\n",
        join(header,
             {"geometry_msgs/Transform", "geometry_msgs/Vector3", "geometry_msgs/Quaternion"})},
@@ -493,6 +688,9 @@ TEST(RosMessageEncoders, NewDefinitionsListEveryNestedTypeOnce) {
        join(join(header, {"geometry_msgs/PoseWithCovariance", "geometry_msgs/TwistWithCovariance",
                           "geometry_msgs/Twist", "geometry_msgs/Vector3"}),
             pose)},
+      {kRos2FrontierClaim, "std_msgs/Header header\n", join(header, {"geometry_msgs/Point"})},
+      {kRos2RobotStatus, "std_msgs/Header header\n", join(header, pose)},
+      {kRos2TeamCommand, "std_msgs/Header header\n", header},
   };
   for (const Expected& e : types) {
     SCOPED_TRACE(std::string(e.type));
@@ -505,6 +703,24 @@ TEST(RosMessageEncoders, NewDefinitionsListEveryNestedTypeOnce) {
     EXPECT_EQ(occurrences(definition, std::string(80, '=') + "\n"),
               occurrences(definition, "MSG: "));
   }
+  // tessera_msgs: the fields as the team's definitions give them.
+  EXPECT_EQ(
+      ros2msg_definition(kRos2FrontierClaim)
+          .rfind(
+              "std_msgs/Header header\nstring robot_id\nuint32 claim_id\n"
+              "geometry_msgs/Point target\nfloat32 radius_m\nfloat32 path_length_m\nbool active\n"
+              "=====",
+              0),
+      0U);
+  EXPECT_EQ(ros2msg_definition(kRos2RobotStatus)
+                .rfind("std_msgs/Header header\nstring robot_id\nuint8 state\nstring reason\n"
+                       "geometry_msgs/Pose pose\nfloat32 explored_area_m2\nuint64 messages_sent\n"
+                       "uint64 bytes_sent\nuint64 messages_dropped\n=====",
+                       0),
+            0U);
+  EXPECT_EQ(ros2msg_definition(kRos2TeamCommand)
+                .rfind("std_msgs/Header header\nstring robot_id\nuint8 command\n=====", 0),
+            0U);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "tessera/core/angle.hpp"
 #include "tessera/core/assert.hpp"
 #include "tessera/core/rng.hpp"
+#include "tessera/sim/lidar_scan.hpp"
 
 namespace tessera {
 namespace {
@@ -111,25 +112,6 @@ class SpeedProfile {
   const LaserRunOptions& o_;
 };
 
-/// One lidar scan from T_world_laser, with the range noise model of Simulator::scan.
-RangeScan simulate_scan(const World& world, const Pose2& T_world_laser, const LidarOptions& lidar,
-                        Rng& rng) {
-  RangeScan scan = empty_scan(lidar);
-  const Vec2 from_m = T_world_laser.translation();
-  const double bound_m = 3.0 * lidar.range_noise_stddev_m;
-  for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
-    const double angle = T_world_laser.theta + scan.angle_min_rad +
-                         static_cast<double>(i) * scan.angle_increment_rad;
-    const double truth_m = world.cast_ray(from_m, angle, lidar.max_range_m);
-    // One draw per beam, hit or not, so a beam's noise does not depend on the others.
-    const double noise_m = std::clamp(rng.gaussian(lidar.range_noise_stddev_m), -bound_m, bound_m);
-    scan.ranges_m[i] = truth_m >= lidar.max_range_m
-                           ? lidar.max_range_m
-                           : std::clamp(truth_m + noise_m, 0.0, lidar.max_range_m);
-  }
-  return scan;
-}
-
 }  // namespace
 
 std::optional<std::string> validate(const LaserRunOptions& o) {
@@ -227,7 +209,7 @@ class LaserRunState {
     s.t_s = t_s;
     s.odometry = odometry_;
     s.laser_in_robot = o_.laser_in_robot;
-    s.scan = simulate_scan(world_, truth_ * o_.laser_in_robot, o_.lidar, lidar_rng_);
+    s.scan = simulate_lidar_scan(world_, truth_ * o_.laser_in_robot, o_.lidar, lidar_rng_);
     run_.log.scans.push_back(std::move(s));
     run_.log.odometry.push_back({t_s, odometry_});
     run_.truth.push_back({t_s, truth_});

@@ -7,6 +7,7 @@
 
 #include "tessera/core/assert.hpp"
 #include "tessera/grid/ray_cast.hpp"
+#include "tessera/sim/lidar_scan.hpp"
 
 namespace tessera {
 namespace {
@@ -116,25 +117,7 @@ CellReading Simulator::sense_cells(int robot) const {
 RangeScan Simulator::scan(int robot) {
   TESSERA_ASSERT(0 <= robot && robot < robot_count());
   Robot& r = robots_[static_cast<std::size_t>(robot)];
-  const LidarOptions& lidar = r.spec.lidar;
-  RangeScan scan = empty_scan(lidar);
-  const Vec2 from_m = r.pose.translation();
-  for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
-    const double angle =
-        r.pose.theta + scan.angle_min_rad + static_cast<double>(i) * scan.angle_increment_rad;
-    const double truth_m = world_.cast_ray(from_m, angle, lidar.max_range_m);
-    // One draw per beam whether or not it returns, so a beam's noise does not depend on the others.
-    // Truncated at 3 sigma, like a datasheet's maximum range error: with
-    // ScanInsertOptions::free_margin_m >= 3 sigma no beam can ever clear the wall cell it hit.
-    const double bound_m = 3.0 * lidar.range_noise_stddev_m;
-    const double noise_m =
-        std::clamp(r.rng.gaussian(lidar.range_noise_stddev_m), -bound_m, bound_m);
-    // A beam that hits nothing reports max range: no return, and no noise on it.
-    scan.ranges_m[i] = truth_m >= lidar.max_range_m
-                           ? lidar.max_range_m
-                           : std::clamp(truth_m + noise_m, 0.0, lidar.max_range_m);
-  }
-  return scan;
+  return simulate_lidar_scan(world_, r.pose, r.spec.lidar, r.rng);
 }
 
 }  // namespace tessera

@@ -6,6 +6,8 @@
 #include <iterator>
 #include <string>
 
+#include "tessera/core/pose_interpolation.hpp"
+
 namespace tessera {
 namespace {
 
@@ -46,11 +48,7 @@ std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted, d
   if (hi->t_s == t_s) return hi->pose;
   // Here sorted.front().t_s < t_s < hi->t_s, so hi has a predecessor and the interval is not empty.
   const auto lo = std::prev(hi);
-  const double alpha = (t_s - lo->t_s) / (hi->t_s - lo->t_s);
-  const Pose2& a = lo->pose;
-  const Pose2& b = hi->pose;
-  return Pose2{a.x + alpha * (b.x - a.x), a.y + alpha * (b.y - a.y),
-               normalize_angle(a.theta + alpha * normalize_angle(b.theta - a.theta))};
+  return interpolate(lo->pose, hi->pose, (t_s - lo->t_s) / (hi->t_s - lo->t_s));
 }
 
 Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajectory,

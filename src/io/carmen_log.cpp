@@ -14,8 +14,8 @@
 
 #include "internal/decoders.hpp"
 #include "internal/file_util.hpp"
-#include "internal/pose_interpolation.hpp"
 #include "internal/text_fields.hpp"
+#include "tessera/core/pose_interpolation.hpp"
 
 namespace tessera {
 namespace {
@@ -262,7 +262,7 @@ Pose2 odometry_at(double t_s, const OdometryReading* a, const OdometryReading* b
   if (a == nullptr) return b->pose;
   if (b == nullptr) return a->pose;
   if (a->t_s < b->t_s && a->t_s <= t_s && t_s <= b->t_s) {
-    return io_internal::interpolate_pose(a->pose, b->pose, (t_s - a->t_s) / (b->t_s - a->t_s));
+    return interpolate(a->pose, b->pose, (t_s - a->t_s) / (b->t_s - a->t_s));
   }
   return std::abs(t_s - a->t_s) <= std::abs(t_s - b->t_s) ? a->pose : b->pose;
 }

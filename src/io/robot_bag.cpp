@@ -6,8 +6,8 @@
 #include <cmath>
 #include <optional>
 
-#include "internal/pose_interpolation.hpp"
 #include "internal/time_ns.hpp"
+#include "tessera/core/pose_interpolation.hpp"
 #include "tessera/io/ros_messages.hpp"
 #include "tessera/io/tf_tree.hpp"
 
@@ -87,10 +87,31 @@ Pose2 odometry_at(const std::vector<Odom>& odom, std::int64_t t_ns) {
   if (b.t_ns == a.t_ns) return b.T_odom_child;
   const double f =
       io_internal::ns_difference(t_ns, a.t_ns) / io_internal::ns_difference(b.t_ns, a.t_ns);
-  return io_internal::interpolate_pose(a.T_odom_child, b.T_odom_child, f);
+  return interpolate(a.T_odom_child, b.T_odom_child, f);
 }
 
 }  // namespace
+
+Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_readings) {
+  if (!std::isfinite(msg.angle_increment_rad) || msg.angle_increment_rad == 0.0F ||
+      !std::isfinite(msg.angle_min_rad) || !std::isfinite(msg.range_max_m) ||
+      !(msg.range_max_m > 0.0F)) {
+    return input_error(
+        "angle_increment must be finite and non-zero, angle_min finite and range_max > 0");
+  }
+  RangeScan scan;
+  scan.angle_min_rad = msg.angle_min_rad;
+  scan.angle_increment_rad = msg.angle_increment_rad;
+  scan.min_range_m = std::isfinite(msg.range_min_m) ? std::max(0.0F, msg.range_min_m) : 0.0;
+  scan.max_range_m = msg.range_max_m;
+  scan.ranges_m.reserve(msg.ranges_m.size());
+  for (const float r : msg.ranges_m) {
+    const bool valid = std::isfinite(r) && r > 0.0F && r >= msg.range_min_m && r <= msg.range_max_m;
+    if (!valid) ++no_return_readings;
+    scan.ranges_m.push_back(valid ? static_cast<double>(r) : scan.max_range_m);
+  }
+  return scan;
+}
 
 bool robot_bag_needs(const BagTopic& topic) {
   bool is_static = false;
@@ -174,13 +195,8 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
   for (std::size_t i = 0; i < scans.size(); ++i) {
     const auto& [log_time_ns, msg] = scans[i];
     const std::int64_t stamp = msg.header.stamp_ns != 0 ? msg.header.stamp_ns : log_time_ns;
-    if (!std::isfinite(msg.angle_increment_rad) || msg.angle_increment_rad == 0.0F ||
-        !std::isfinite(msg.angle_min_rad) || !std::isfinite(msg.range_max_m) ||
-        !(msg.range_max_m > 0.0F)) {
-      return input_error(at(file, scans_t, i) +
-                         ": angle_increment must be finite and non-zero, angle_min finite and "
-                         "range_max > 0");
-    }
+    Result<RangeScan> scan = range_scan_of(msg, out.no_return_readings);
+    if (!scan.ok()) return input_error(at(file, scans_t, i) + ": " + scan.error().message);
     StampedScan s;
     s.t_s = seconds(stamp);
     Pose2 T_odom_base = odometry_at(odom, stamp);
@@ -204,17 +220,7 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
       }
       s.laser_in_robot = planar_pose(*T_base_laser);
     }
-    s.scan.angle_min_rad = msg.angle_min_rad;
-    s.scan.angle_increment_rad = msg.angle_increment_rad;
-    s.scan.min_range_m = std::isfinite(msg.range_min_m) ? std::max(0.0F, msg.range_min_m) : 0.0;
-    s.scan.max_range_m = msg.range_max_m;
-    s.scan.ranges_m.reserve(msg.ranges_m.size());
-    for (const float r : msg.ranges_m) {
-      const bool valid =
-          std::isfinite(r) && r > 0.0F && r >= msg.range_min_m && r <= msg.range_max_m;
-      if (!valid) ++out.no_return_readings;
-      s.scan.ranges_m.push_back(valid ? static_cast<double>(r) : s.scan.max_range_m);
-    }
+    s.scan = std::move(*scan);
     out.log.scans.push_back(std::move(s));
   }
   for (std::size_t i = 1; i < out.log.scans.size(); ++i) {

@@ -19,6 +19,7 @@
 
 #include "tessera/core/result.hpp"
 #include "tessera/io/ros_bag.hpp"
+#include "tessera/io/ros_messages.hpp"
 #include "tessera/sensors/laser_log.hpp"
 
 namespace tessera {
@@ -44,6 +45,12 @@ struct RobotBag {
   std::string laser_frame;     // the scans' header.frame_id (the first scan's)
   int no_return_readings = 0;  // readings mapped to no-return
 };
+
+/// The RangeScan of one sensor_msgs/LaserScan, as above: readings that are not a return become
+/// range_max and are counted in `no_return_readings`. kInput error (without a location: the caller
+/// names the file or topic) when angle_increment is 0 or not finite, angle_min is not finite or
+/// range_max is not > 0.
+[[nodiscard]] Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_readings);
 
 /// Topics whose message bytes read_robot_bag needs: LaserScan, Odometry, and TFMessage on
 /// /tf and /tf_static.

@@ -59,6 +59,16 @@ class InProcessTransport final : public Transport {
                   [&](const auto& r) { return r.second.participant == participant_; });
   }
 
+  std::size_t matched_readers(WriterId writer) const override {
+    const std::lock_guard lock(state_->mutex);
+    const auto w = state_->writers.find(writer);
+    if (w == state_->writers.end()) return 0;
+    std::size_t n = 0;
+    for (const auto& [id, r] : state_->readers)
+      n += State::matches(w->second.topic, r.topic) ? 1 : 0;
+    return n;
+  }
+
   bool wait(double timeout_s) override {
     std::unique_lock lock(state_->mutex);
     return state_->arrived.wait_for(lock, std::chrono::duration<double>(timeout_s),

@@ -96,6 +96,7 @@ TEST(DdsTransport, AScanCrossesBetweenParticipantsByteForByte) {
                }).ok());
   const auto w = a->advertise(spec);
   ASSERT_TRUE(w.ok());
+  EXPECT_TRUE(poll_until(*a, [&] { return a->matched_readers(*w) == 1; }));
   const Bytes sent = encode_cdr(scan_message(1.25F));
   ASSERT_TRUE(publish_until(*a, *w, sent, *b, [&] { return !received.empty(); }));
   EXPECT_TRUE(same_message(received.front(), sent));

@@ -91,6 +91,21 @@ TEST(InProcessTransport, ATransientLocalReaderGetsTheLastMapOnJoiningAndAVolatil
   EXPECT_TRUE(after.firsts.empty());
 }
 
+TEST(InProcessTransport, AWriterCountsItsMatchedReaders) {
+  InProcessBus bus;
+  auto a = bus.join();
+  const auto w = advertise(*a, {"/scan", kScanType, Qos::reliable(5)});
+  EXPECT_EQ(a->matched_readers(w), 0U);
+  auto b = bus.join();
+  Inbox inbox;
+  subscribe(*b, {"/scan", kScanType, Qos::sensor_data()}, inbox);
+  subscribe(*b, {"/scan", kMapType, Qos::sensor_data()}, inbox);  // another type: no match
+  EXPECT_EQ(a->matched_readers(w), 1U);
+  b.reset();
+  EXPECT_EQ(a->matched_readers(w), 0U);
+  EXPECT_EQ(a->matched_readers(999), 0U);
+}
+
 TEST(InProcessTransport, IncompatibleQosOrTypeMeansNoMatch) {
   InProcessBus bus;
   auto a = bus.join();

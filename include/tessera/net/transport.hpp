@@ -60,6 +60,9 @@ class Transport {
   std::size_t poll();
   /// Blocks until a message is waiting for poll() or `timeout_s` has passed; true if one waits.
   virtual bool wait(double timeout_s) = 0;
+  /// How many readers `writer` is matched with now (same topic and type, compatible QoS), in any
+  /// participant: a player waits for its first reader before it sends (0 for an unknown writer).
+  [[nodiscard]] virtual std::size_t matched_readers(WriterId writer) const = 0;
 
   /// Traffic per topic name since the transport was made.
   [[nodiscard]] const std::map<std::string, TopicTraffic, std::less<>>& traffic() const {

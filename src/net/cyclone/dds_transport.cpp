@@ -124,6 +124,14 @@ class DdsTransport final : public Transport {
     participant_ = Entity();
   }
 
+  std::size_t matched_readers(WriterId writer) const override {
+    const auto w = writers_.find(writer);
+    if (w == writers_.end()) return 0;
+    dds_publication_matched_status_t status{};
+    if (dds_get_publication_matched_status(w->second.entity.get(), &status) < 0) return 0;
+    return status.current_count;
+  }
+
   bool wait(double timeout_s) override {
     const auto timeout = static_cast<dds_duration_t>(std::max(timeout_s, 0.0) * 1e9);
     return dds_waitset_wait(waitset_.get(), nullptr, 0, timeout) > 0;

@@ -1,0 +1,74 @@
+#pragma once
+// Live laser SLAM as a ROS 2 node (issue 14), the pipeline of slam/laser_slam.hpp fed from topics
+// instead of a file. In namespace `ns` ("/r1", or "" for none):
+//   subscribes <ns>/scan sensor_msgs/LaserScan, <ns>/odom nav_msgs/Odometry (best effort, so any
+//              driver's sensor-data publisher matches; a deep queue holds scans while SLAM works),
+//              /tf_static and /tf (the laser's place on the robot: base frame -> scan frame)
+//   publishes  <ns>/map nav_msgs/OccupancyGrid (reliable, transient local: a late viewer gets it)
+//              at least once per map_period_wall_s while scans arrive, /tf map -> odom (REP-105),
+//              and <ns>/pose geometry_msgs/PoseWithCovarianceStamped (T_map_base per scan).
+// A scan is added once an odometry message with its stamp is in, or one stamped after it has
+// arrived after it; its odometry is then interpolated between the two messages around its stamp,
+// as the bag reader does. So a scan and an odometry message with the same stamp, as `tessera
+// play` sends them, give the offline pipeline's input exactly, in whatever order DDS delivers
+// the two topics and even where a log's stamps go backwards.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "tessera/core/result.hpp"
+#include "tessera/net/transport.hpp"
+#include "tessera/slam/laser_slam.hpp"
+
+namespace tessera::nodes {
+
+struct SlamNodeOptions {
+  std::string ns;  // "" or "/r1"
+  std::string map_frame = "map";
+  double map_period_wall_s = 1.0;
+  /// Scans waiting for odometry or for SLAM: beyond this, the oldest is dropped and counted.
+  std::uint32_t queue_depth = 2000;
+  slam::LaserSlamOptions slam{};
+};
+
+/// What came in and what became of it; "dropped" counts are messages refused as invalid.
+struct SlamNodeStats {
+  std::uint64_t scans_received = 0;
+  std::uint64_t scans_added = 0;
+  std::uint64_t scans_dropped_invalid = 0;   // did not decode, or unusable angles and ranges
+  std::uint64_t scans_dropped_no_pose = 0;   // no odometry or no laser transform for them
+  std::uint64_t scans_dropped_overflow = 0;  // the wait queue was full
+  std::uint64_t odometry_received = 0;
+  std::uint64_t odometry_dropped_invalid = 0;  // did not decode or not finite
+  std::uint64_t maps_published = 0;
+};
+
+class SlamNode {
+ public:
+  /// kUsage error for invalid SLAM options; kInput for a namespace that is no ROS 2 name; the
+  /// transport's errors otherwise. `transport` must outlive the node.
+  [[nodiscard]] static Result<std::unique_ptr<SlamNode>> create(const SlamNodeOptions& options,
+                                                                net::Transport& transport);
+  ~SlamNode();
+  SlamNode(const SlamNode&) = delete;
+  SlamNode& operator=(const SlamNode&) = delete;
+
+  /// Delivers what has arrived and adds every scan whose odometry is known, publishing the pose
+  /// and map -> odom for each and the map when due. Returns how many scans it added; kRuntime
+  /// error when SLAM's optimisation or a publication fails.
+  [[nodiscard]] Result<int> spin_once();
+  /// Adds the scans still waiting (odometry clamped to the last message), optimises once more and
+  /// publishes the final map. Call once, at the end.
+  [[nodiscard]] Result<slam::LaserSlamResult> finish();
+
+  [[nodiscard]] const SlamNodeStats& stats() const;
+  /// True once a scan has been added (the pose and map exist).
+  [[nodiscard]] bool started() const;
+
+ private:
+  struct State;
+  explicit SlamNode(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace tessera::nodes

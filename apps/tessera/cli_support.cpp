@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -29,6 +30,25 @@ int report_error(const Error& e) {
   fmt::print(stderr, "tessera: {}\n", e.message);
   return exit_code(e);
 }
+
+namespace {
+
+volatile std::sig_atomic_t g_stop_requested = 0;
+extern "C" void request_stop(int) { g_stop_requested = 1; }
+
+}  // namespace
+
+StopSignals::StopSignals()
+    : old_int_(std::signal(SIGINT, request_stop)), old_term_(std::signal(SIGTERM, request_stop)) {
+  g_stop_requested = 0;
+}
+
+StopSignals::~StopSignals() {
+  std::signal(SIGINT, old_int_);
+  std::signal(SIGTERM, old_term_);
+}
+
+bool StopSignals::requested() { return g_stop_requested != 0; }
 
 bool stderr_is_terminal() { return isatty(fileno(stderr)) != 0; }
 
@@ -66,10 +86,10 @@ void ProgressLine::show(const std::string& text, std::int64_t done, std::int64_t
                 : 0.0;
   constexpr int kWidth = 24;
   const int filled = static_cast<int>(fraction * kWidth);
-  std::string line = "[" + std::string(static_cast<std::size_t>(filled), '#') +
-                     std::string(static_cast<std::size_t>(kWidth - filled), '.') + "] " +
-                     fmt::format("{:3.0f}%  {}  {} elapsed", 100.0 * fraction, text,
-                                 clock_text(elapsed_s));
+  std::string line =
+      "[" + std::string(static_cast<std::size_t>(filled), '#') +
+      std::string(static_cast<std::size_t>(kWidth - filled), '.') + "] " +
+      fmt::format("{:3.0f}%  {}  {} elapsed", 100.0 * fraction, text, clock_text(elapsed_s));
   if (elapsed_s > 0.0 && done > 0) {
     const double rate = static_cast<double>(done) / elapsed_s;
     line += fmt::format("  {:.0f} {}/s  {} left", rate, unit,

@@ -27,6 +27,21 @@ int report_error(const Error& e);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// Ctrl-C and SIGTERM, while an object lives, ask the command to stop instead of killing it
+/// (a node finishes its step and exits cleanly; the live view stops lingering). The handlers that
+/// were there before come back when it goes.
+class StopSignals {
+ public:
+  StopSignals();
+  ~StopSignals();
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  [[nodiscard]] static bool requested();
+
+ private:
+  void (*old_int_)(int);
+  void (*old_term_)(int);
+};
 
 /// True when stderr is a terminal (progress lines are shown only there).
 [[nodiscard]] bool stderr_is_terminal();

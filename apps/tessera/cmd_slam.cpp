@@ -4,8 +4,6 @@
 // writes nothing; run; write map, trajectory, graph and report.json; print one summary line.
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -76,9 +74,11 @@ SlamCommand::SlamCommand(CLI::App& app) {
                  "Local SLAM only: scan-to-submap matching, no pose graph corrections");
   add_output_stream_options(*sub_, streams_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
+  add_ros_options();
 }
 
 int SlamCommand::run() const {
+  if (ros_) return run_ros();
   if (!std::isfinite(time_offset_s_)) {
     return report_error(usage_error("--time-offset must be a finite number of seconds"));
   }
@@ -223,13 +223,7 @@ int SlamCommand::run() const {
         "({:.1f}x real time)\n",
         st.scans, st.nodes, st.submaps, st.loop_closures, wall_s, duration_s,
         realtime_factor(duration_s, wall_s).value_or(0.0));
-    if (metric) {
-      fmt::print(
-          "relations: {} scored; translation {:.4f} +/- {:.4f} m, rotation {:.3f} +/- "
-          "{:.3f} deg\n",
-          metric->count, metric->trans_mean_m, metric->trans_std_m,
-          rad_to_deg(metric->rot_mean_rad), rad_to_deg(metric->rot_std_rad));
-    }
+    if (metric) print_relations_summary(*metric);
     if (score) {
       fmt::print(
           "ground truth: ATE {:.4f} m with SLAM, {:.4f} m odometry alone ({:.1f}x); map: {} of "

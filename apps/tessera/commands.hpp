@@ -180,6 +180,14 @@ class SlamCommand : public Command {
   bool no_loop_closure_ = false;
   OutputStreams streams_;  // --record, --serve
   bool quiet_ = false;
+  // --ros: the live SLAM node on Cyclone DDS (cmd_slam_ros.cpp).
+  void add_ros_options();
+  [[nodiscard]] int run_ros() const;
+  bool ros_ = false;
+  std::string ns_;
+  std::uint32_t domain_ = 0;
+  bool network_ = false;
+  double idle_exit_s_ = 0.0;
 };
 
 /// tessera fusion: the thesis' Fusion SLAM on RGB-D data (fusion/). One mode per input: --pair DIR
@@ -209,7 +217,7 @@ class FusionCommand : public Command {
     double route_length_m = 9.7;                         // the thesis' route: 7.4 m + 2.3 m
     double duration_s = 600.0;                           // --world: the mapping run's time limit
     std::optional<std::filesystem::path> save_sequence;  // --world: the run as a TUM folder
-    OutputStreams streams;  // --world, --sequence: --record, --serve
+    OutputStreams streams;                               // --world, --sequence: --record, --serve
     // --world: the neck sweeps while the robot drives, fast enough that a firing-field visit
     // (0.3 m at 0.3 m/s) sees several directions, as wide as the teach stage's five capture
     // angles (mission/teach_and_repeat.hpp). Ours; the period is measured in decision 0010.
@@ -230,6 +238,45 @@ class FusionCommand : public Command {
 
   Options options_;
   WorldSource world_;
+};
+
+/// tessera sim: the simulator as a ROS 2 node over Cyclone DDS (nodes/sim_node.hpp): robots with
+/// a lidar and drifting odometry that publish /rN/scan, /rN/odom, /tf, /clock and obey
+/// /rN/cmd_vel, paced against the wall clock by --rate.
+class SimCommand : public Command {
+ public:
+  explicit SimCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  WorldSource world_;
+  double resolution_m_ = 0.05;  // the grid the built-in worlds are drawn at
+  int robots_ = 1;
+  std::vector<std::string> starts_;  // "X,Y[,THETA]" per robot; empty: drawn from --seed
+  std::uint64_t seed_ = 1;
+  double rate_ = 1.0;        // simulated seconds per wall second; 0: as fast as possible
+  double duration_s_ = 0.0;  // simulated; 0: until Ctrl-C or SIGTERM
+  std::uint32_t domain_ = 0;
+  bool network_ = false;  // all interfaces and multicast discovery instead of loopback only
+  bool quiet_ = false;
+};
+
+/// tessera play: a laser log played as ROS 2 topics over Cyclone DDS (nodes/log_player.hpp),
+/// paced by its stamps and --rate, after the first subscriber of the scans has appeared.
+class PlayCommand : public Command {
+ public:
+  explicit PlayCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  std::filesystem::path log_;
+  double rate_ = 1.0;  // 0: as fast as possible
+  std::string ns_;
+  std::uint32_t domain_ = 0;
+  bool network_ = false;
+  double wait_s_ = 30.0;  // for the first subscriber
+  std::int64_t max_scans_ = 0;
+  bool quiet_ = false;
 };
 
 }  // namespace tessera::cli

@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
   EvalCommand eval(app);
   SlamCommand slam(app);
   FusionCommand fusion(app);
+  SimCommand sim(app);
+  PlayCommand play(app);
   add_config_options(app);
 
   try {
@@ -42,5 +44,7 @@ int main(int argc, char** argv) {
   if (eval.parsed()) return eval.run();
   if (slam.parsed()) return slam.run();
   if (fusion.parsed()) return fusion.run();
+  if (sim.parsed()) return sim.run();
+  if (play.parsed()) return play.run();
   return kExitUsage;
 }

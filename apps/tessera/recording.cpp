@@ -3,17 +3,11 @@
 #include <fmt/core.h>
 
 #include <chrono>
-#include <csignal>
 
+#include "cli_support.hpp"
 #include "tessera/io/atomic_file.hpp"
 
 namespace tessera::cli {
-namespace {
-
-volatile std::sig_atomic_t g_stop_serving = 0;
-extern "C" void stop_serving(int) { g_stop_serving = 1; }
-
-}  // namespace
 
 void add_output_stream_options(CLI::App& command, OutputStreams& streams) {
   command.add_option("--record", streams.record,
@@ -114,17 +108,13 @@ void Recording::linger(bool announce) {
       fmt::print(stderr, "live view: the run finished; serving {:g} s more\n", linger_s);
     }
   }
-  g_stop_serving = 0;
-  auto* const old_int = std::signal(SIGINT, stop_serving);
-  auto* const old_term = std::signal(SIGTERM, stop_serving);
+  const StopSignals stop;
   const auto end =
       std::chrono::steady_clock::now() +
       std::chrono::milliseconds(static_cast<std::int64_t>(1000.0 * std::max(linger_s, 0.0)));
-  while (g_stop_serving == 0 && (linger_s < 0 || std::chrono::steady_clock::now() < end)) {
+  while (!StopSignals::requested() && (linger_s < 0 || std::chrono::steady_clock::now() < end)) {
     server_->serve_for(std::chrono::milliseconds(100));
   }
-  std::signal(SIGINT, old_int);
-  std::signal(SIGTERM, old_term);
   server_.reset();
 }
 

@@ -1,14 +1,17 @@
 // The report.json blocks of tessera slam (cmd_slam.cpp): JSON of the library's result structs.
 #include "slam_report.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
+#include "tessera/core/angle.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/g2o_file.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
-#include "tessera/render/render.hpp"
 #include "tessera/io/tum_trajectory.hpp"
+#include "tessera/render/render.hpp"
 
 namespace tessera::cli {
 
@@ -150,6 +153,13 @@ Status write_laser_slam_outputs(const std::filesystem::path& out, const slam::La
     files.push_back({out / "odometry.txt", odometry_tum});
   }
   return write_files_atomic(files);
+}
+
+void print_relations_summary(const RelationMetric& metric) {
+  fmt::print(
+      "relations: {} scored; translation {:.4f} +/- {:.4f} m, rotation {:.3f} +/- {:.3f} deg\n",
+      metric.count, metric.trans_mean_m, metric.trans_std_m, rad_to_deg(metric.rot_mean_rad),
+      rad_to_deg(metric.rot_std_rad));
 }
 
 }  // namespace tessera::cli

@@ -10,6 +10,7 @@
 #include "tessera/core/stamped_pose2.hpp"
 #include "tessera/eval/drift_correction.hpp"
 #include "tessera/eval/map_accuracy.hpp"
+#include "tessera/eval/relation_metric.hpp"
 #include "tessera/io/robot_bag.hpp"
 #include "tessera/sensors/laser_log.hpp"
 #include "tessera/sim/laser_run.hpp"
@@ -31,6 +32,9 @@ nlohmann::json bag_json(const RobotBag& bag);
 nlohmann::json simulation_json(const SimulatedLaserRun& run, const World& world);
 nlohmann::json ate_json(const DriftCorrectionScore& score);
 nlohmann::json map_accuracy_json(const MapAccuracy& m, const Pose2& T_truth_map);
+
+/// "relations: N scored; translation ... m, rotation ... deg" on stdout.
+void print_relations_summary(const RelationMetric& metric);
 
 /// map.yaml + map.pgm, map.png (map errors in colour when `world` is given, the map placed by
 /// T_truth_map), trajectory.txt, graph.g2o, report.json, and for a simulated run truth.txt and

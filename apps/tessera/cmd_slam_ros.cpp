@@ -1,0 +1,121 @@
+// tessera slam --ros: the live SLAM node (nodes/slam_node.hpp) on Cyclone DDS. It maps what
+// arrives on <ns>/scan and <ns>/odom until Ctrl-C, SIGTERM or --idle-exit-s without a scan, then
+// writes what `tessera slam --log` writes, with the node's message counts in report.json.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "dds_options.hpp"
+#include "slam_report.hpp"
+#include "tessera/eval/relation_metric.hpp"
+#include "tessera/io/relations_file.hpp"
+#include "tessera/nodes/slam_node.hpp"
+#include "tessera/report/core_report.hpp"
+#include "tessera/report/eval_report.hpp"
+
+namespace tessera::cli {
+namespace {
+
+nlohmann::json node_stats_json(const nodes::SlamNodeStats& s) {
+  return {{"scans_received", s.scans_received},
+          {"scans_added", s.scans_added},
+          {"scans_dropped_invalid", s.scans_dropped_invalid},
+          {"scans_dropped_no_pose", s.scans_dropped_no_pose},
+          {"scans_dropped_overflow", s.scans_dropped_overflow},
+          {"odometry_received", s.odometry_received},
+          {"odometry_dropped_invalid", s.odometry_dropped_invalid},
+          {"maps_published", s.maps_published}};
+}
+
+}  // namespace
+
+void SlamCommand::add_ros_options() {
+  sub_->add_flag("--ros", ros_,
+                 "Live SLAM node on Cyclone DDS: subscribe <ns>/scan, <ns>/odom, /tf, /tf_static; "
+                 "publish <ns>/map, <ns>/pose and map -> odom on /tf");
+  sub_->add_option("--ns", ns_, "--ros: namespace of the topics, e.g. /r1 (default: none)");
+  add_dds_options(*sub_, domain_, network_);
+  sub_->add_option("--idle-exit-s", idle_exit_s_,
+                   "--ros: finish when no scan has arrived for this long (0: run until stopped)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+}
+
+int SlamCommand::run_ros() const {
+  if (log_ || bag_ || world_.file) {
+    return report_error(usage_error("--ros maps the topics: give no --log, --bag or --world"));
+  }
+  nodes::SlamNodeOptions options;
+  options.ns = ns_;
+  options.slam.loop_closure = !no_loop_closure_;
+  options.slam.map_resolution_m = cell_m_.value_or(0.05);
+  std::optional<std::vector<Relation>> relations;
+  if (relations_) {
+    Result<std::vector<Relation>> read = read_relations(*relations_);
+    if (!read) return report_error(read.error());
+    relations = std::move(read).value();
+  }
+  Result<std::unique_ptr<net::Transport>> transport = open_dds(domain_, network_);
+  if (!transport.ok()) return report_error(transport.error());
+  Result<std::unique_ptr<nodes::SlamNode>> node = nodes::SlamNode::create(options, **transport);
+  if (!node.ok()) return report_error(node.error());
+
+  const StopSignals stop;
+  ProgressLine progress(!quiet_ && stderr_is_terminal());
+  const auto t0 = std::chrono::steady_clock::now();
+  auto last_scan = t0;
+  std::uint64_t received = 0;
+  while (!StopSignals::requested()) {
+    (*transport)->wait(0.05);
+    if (Result<int> added = (*node)->spin_once(); !added.ok()) return report_error(added.error());
+    const nodes::SlamNodeStats& st = (*node)->stats();
+    if (st.scans_received != received) {
+      received = st.scans_received;
+      last_scan = std::chrono::steady_clock::now();
+      progress.show(
+          fmt::format("slam --ros: {} scans received, {} mapped", received, st.scans_added));
+    }
+    if (idle_exit_s_ > 0.0 && received > 0 && seconds_since(last_scan) > idle_exit_s_) break;
+  }
+  progress.finish();
+  Result<slam::LaserSlamResult> result = (*node)->finish();
+  if (!result.ok()) return report_error(result.error());
+  const double wall_s = seconds_since(t0);
+  const slam::LaserSlamResult& r = *result;
+
+  nlohmann::json report = {{"options", slam_options_json(options.slam, "ros", ns_)},
+                           {"slam", slam_stats_json(r, LaserLog{})},
+                           {"ros", node_stats_json((*node)->stats())}};
+  const double duration_s =
+      r.trajectory.empty() ? 0.0 : r.trajectory.back().t_s - r.trajectory.front().t_s;
+  report.update(core_report({"slam", std::nullopt, report["options"], wall_s, duration_s}));
+  std::optional<RelationMetric> metric;
+  if (relations) {
+    Result<RelationMetric> scored = relation_metric(r.trajectory, *relations, time_offset_s_);
+    if (!scored) return report_error(scored.error());
+    metric = *scored;
+    report["options"]["relations"] = relations_->string();
+    report["options"]["time_offset_s"] = time_offset_s_;
+    report["relations"] = relations_report(*metric, {})["relations"];
+  }
+  if (Status s = write_laser_slam_outputs(out_, r, report, nullptr, Pose2{}, nullptr); !s) {
+    return report_error(s.error());
+  }
+  if (!quiet_) {
+    const nodes::SlamNodeStats& st = (*node)->stats();
+    fmt::print(
+        "slam --ros: {} scans received, {} mapped, {} dropped; {} submaps, {} loop "
+        "closures\n",
+        st.scans_received, st.scans_added,
+        st.scans_dropped_invalid + st.scans_dropped_no_pose + st.scans_dropped_overflow,
+        r.stats.submaps, r.stats.loop_closures);
+    if (metric) print_relations_summary(*metric);
+    fmt::print("outputs: {}/map.yaml map.pgm map.png trajectory.txt graph.g2o report.json\n",
+               out_.string());
+  }
+  return kExitOk;
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,26 @@
+#include "dds_options.hpp"
+
+#include <cstdlib>
+#include <string>
+
+#include "tessera/net/dds_transport.hpp"
+
+namespace tessera::cli {
+
+void add_dds_options(CLI::App& command, std::uint32_t& domain, bool& network) {
+  if (const char* ros_domain = std::getenv("ROS_DOMAIN_ID"); ros_domain != nullptr) {
+    domain = static_cast<std::uint32_t>(std::strtoul(ros_domain, nullptr, 10));
+  }
+  command.add_option("--domain", domain, "DDS domain (default: $ROS_DOMAIN_ID, else 0)")
+      ->check(CLI::Range(0, 232))
+      ->capture_default_str();
+  command.add_flag("--network", network,
+                   "Use the machine's network with multicast discovery, as ROS 2 does (default: "
+                   "127.0.0.1 only)");
+}
+
+Result<std::unique_ptr<net::Transport>> open_dds(std::uint32_t domain, bool network) {
+  return net::make_dds_transport({.domain_id = domain, .loopback_only = !network});
+}
+
+}  // namespace tessera::cli

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <optional>
 
-#include "internal/time_ns.hpp"
 #include "tessera/core/pose_interpolation.hpp"
+#include "tessera/core/time_ns.hpp"
 #include "tessera/io/ros_messages.hpp"
 #include "tessera/io/tf_tree.hpp"
 
@@ -71,25 +71,6 @@ std::string at(const std::string& file, const BagTopic& t, std::size_t n) {
 
 double seconds(std::int64_t ns) { return 1e-9 * static_cast<double>(ns); }
 
-struct Odom {
-  std::int64_t t_ns = 0;
-  Pose2 T_odom_child;
-};
-
-/// Odometry at t_ns between the readings around it (CARMEN's RAWLASER1 rule, carmen_log.hpp).
-Pose2 odometry_at(const std::vector<Odom>& odom, std::int64_t t_ns) {
-  const auto after = std::lower_bound(odom.begin(), odom.end(), t_ns,
-                                      [](const Odom& o, std::int64_t v) { return o.t_ns < v; });
-  if (after == odom.begin()) return after->T_odom_child;
-  if (after == odom.end()) return odom.back().T_odom_child;
-  const Odom& a = *(after - 1);
-  const Odom& b = *after;
-  if (b.t_ns == a.t_ns) return b.T_odom_child;
-  const double f =
-      io_internal::ns_difference(t_ns, a.t_ns) / io_internal::ns_difference(b.t_ns, a.t_ns);
-  return interpolate(a.T_odom_child, b.T_odom_child, f);
-}
-
 }  // namespace
 
 Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_readings) {
@@ -150,7 +131,7 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
 
   // One pass: tf into the tree, odometry and scans decoded in storage order.
   TfTree tf;
-  std::vector<Odom> odom;
+  std::vector<PoseAtNs> odom;                                    // T_odom_child by stamp
   std::vector<std::pair<std::int64_t, LaserScanMessage>> scans;  // with log time
   std::vector<std::size_t> seen(bag.topics.size(), 0);
   std::string child_frame;
@@ -182,13 +163,13 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
   if (scans.empty()) return input_error(file + ": topic " + scans_t.name + " has no messages");
   if (odom.empty()) return input_error(file + ": topic " + odom_t.name + " has no messages");
   std::stable_sort(odom.begin(), odom.end(),
-                   [](const Odom& a, const Odom& b) { return a.t_ns < b.t_ns; });
+                   [](const PoseAtNs& a, const PoseAtNs& b) { return a.t_ns < b.t_ns; });
   out.base_frame =
       options.base_frame.empty() ? child_frame : std::string(tf_frame_name(options.base_frame));
   out.laser_frame = std::string(tf_frame_name(scans.front().second.header.frame_id));
 
-  for (const Odom& o : odom) {
-    out.log.odometry.push_back({seconds(o.t_ns), o.T_odom_child});
+  for (const PoseAtNs& o : odom) {
+    out.log.odometry.push_back({seconds(o.t_ns), o.pose});
   }
   const bool base_is_child = out.base_frame == child_frame;
   out.log.scans.reserve(scans.size());
@@ -199,7 +180,7 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     if (!scan.ok()) return input_error(at(file, scans_t, i) + ": " + scan.error().message);
     StampedScan s;
     s.t_s = seconds(stamp);
-    Pose2 T_odom_base = odometry_at(odom, stamp);
+    Pose2 T_odom_base = pose_at(odom, stamp);
     if (!base_is_child) {
       Result<RosTransform> T_child_base = tf.lookup(child_frame, out.base_frame, stamp);
       if (!T_child_base) {

@@ -10,7 +10,7 @@
 
 #include "internal/bag_builder.hpp"
 #include "internal/file_util.hpp"
-#include "internal/time_ns.hpp"
+#include "tessera/core/time_ns.hpp"
 
 namespace tessera {
 namespace {
@@ -113,13 +113,11 @@ Status read_rosbag2_folder(const std::filesystem::path& dir, BagBuilder& builder
 
 double BagTopic::rate_hz() const {
   if (message_count < 2 || last_ns <= first_ns) return 0.0;
-  const double span_s = 1e-9 * io_internal::ns_difference(last_ns, first_ns);
+  const double span_s = 1e-9 * ns_difference(last_ns, first_ns);
   return static_cast<double>(message_count - 1) / span_s;
 }
 
-double RosBag::duration_s() const {
-  return 1e-9 * io_internal::ns_difference(end_ns(), start_ns());
-}
+double RosBag::duration_s() const { return 1e-9 * ns_difference(end_ns(), start_ns()); }
 
 std::uint64_t RosBag::message_count() const {
   std::uint64_t n = 0;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <set>
 
-#include "internal/time_ns.hpp"
+#include "tessera/core/time_ns.hpp"
 
 namespace tessera {
 namespace {
@@ -108,8 +108,7 @@ RosTransform TfTree::at(const Edge& edge, std::int64_t t_ns) {
   const auto after = std::lower_bound(s.begin(), s.end(), t_ns,
                                       [](const Sample& a, std::int64_t v) { return a.t_ns < v; });
   const auto before = after - 1;
-  const double f = io_internal::ns_difference(t_ns, before->t_ns) /
-                   io_internal::ns_difference(after->t_ns, before->t_ns);
+  const double f = ns_difference(t_ns, before->t_ns) / ns_difference(after->t_ns, before->t_ns);
   return interpolate(before->T_parent_child, after->T_parent_child, f);
 }
 

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <vector>
 
 #include "tessera/core/pose_interpolation.hpp"
@@ -42,17 +43,14 @@ struct SlamNode::State {
     // is in. (A log's stamps may go backwards, so older odometry with later stamps says nothing.)
     bool odometry_passed = false;
   };
-  struct Odom {
-    std::int64_t t_ns = 0;
-    Pose2 T_odom_base;
-  };
 
   SlamNodeOptions options;
   Transport& transport;
   slam::LaserSlam slam;
   SlamNodeStats stats;
   std::deque<PendingScan> pending;
-  std::vector<Odom> odometry;  // by stamp; entries older than the last added scan are pruned
+  std::vector<PoseAtNs>
+      odometry;  // T_odom_base  // by stamp; entries older than the last added scan are pruned
   std::string odom_frame, base_frame;
   TfTree tf;
   Transport::WriterId map_writer = 0, tf_writer = 0, pose_writer = 0;
@@ -138,11 +136,11 @@ struct SlamNode::State {
       odom_frame = tf_frame_name(m->header.frame_id);
       base_frame = tf_frame_name(m->child_frame_id);
     }
-    const Odom o{m->header.stamp_ns, planar_pose(m->pose)};
+    const PoseAtNs o{m->header.stamp_ns, planar_pose(m->pose)};
     for (PendingScan& p : pending) p.odometry_passed = p.odometry_passed || o.t_ns >= p.t_ns;
     // Messages arrive in stamp order from one publisher; an older one is put in its place.
     const auto at = std::upper_bound(odometry.begin(), odometry.end(), o.t_ns,
-                                     [](std::int64_t t, const Odom& x) { return t < x.t_ns; });
+                                     [](std::int64_t t, const PoseAtNs& x) { return t < x.t_ns; });
     odometry.insert(at, o);
   }
 
@@ -154,22 +152,9 @@ struct SlamNode::State {
     }
   }
 
-  // Odometry at t_ns between the messages around it; the nearer one outside their span.
-  [[nodiscard]] Pose2 odometry_at(std::int64_t t_ns) const {
-    const auto after = std::lower_bound(odometry.begin(), odometry.end(), t_ns,
-                                        [](const Odom& o, std::int64_t v) { return o.t_ns < v; });
-    if (after == odometry.begin()) return after->T_odom_base;
-    if (after == odometry.end()) return odometry.back().T_odom_base;
-    const Odom& a = *(after - 1);
-    const Odom& b = *after;
-    if (b.t_ns == a.t_ns) return b.T_odom_base;
-    return interpolate(a.T_odom_base, b.T_odom_base,
-                       static_cast<double>(t_ns - a.t_ns) / static_cast<double>(b.t_ns - a.t_ns));
-  }
-
   [[nodiscard]] bool has_odometry_at(std::int64_t t_ns) const {
-    return std::binary_search(odometry.begin(), odometry.end(), Odom{t_ns, {}},
-                              [](const Odom& a, const Odom& b) { return a.t_ns < b.t_ns; });
+    return std::binary_search(odometry.begin(), odometry.end(), PoseAtNs{t_ns, {}},
+                              [](const PoseAtNs& a, const PoseAtNs& b) { return a.t_ns < b.t_ns; });
   }
 
   // T_base_laser of a scan frame, if the tf tree knows it.
@@ -199,7 +184,7 @@ struct SlamNode::State {
       pending.pop_front();
       return true;
     }
-    StampedScan scan{seconds(s.t_ns), odometry_at(s.t_ns), *laser, s.scan};
+    StampedScan scan{seconds(s.t_ns), pose_at(odometry, s.t_ns), *laser, s.scan};
     if (Status added = slam.add_scan(scan); !added.ok()) return added.error();
     ++stats.scans_added;
     started = true;
@@ -214,9 +199,13 @@ struct SlamNode::State {
   // younger than that, even one older than the scan just added.
   void prune_odometry() {
     constexpr std::int64_t kOdometryKept_ns = 10'000'000'000;
-    const std::int64_t oldest = odometry.back().t_ns - kOdometryKept_ns;
-    const auto keep = std::lower_bound(odometry.begin(), odometry.end(), oldest,
-                                       [](const Odom& o, std::int64_t v) { return o.t_ns < v; });
+    std::int64_t oldest = 0;  // a peer's stamps may be anything: no signed overflow
+    if (__builtin_sub_overflow(odometry.back().t_ns, kOdometryKept_ns, &oldest)) {
+      oldest = std::numeric_limits<std::int64_t>::min();
+    }
+    const auto keep =
+        std::lower_bound(odometry.begin(), odometry.end(), oldest,
+                         [](const PoseAtNs& o, std::int64_t v) { return o.t_ns < v; });
     if (keep - odometry.begin() > 1) odometry.erase(odometry.begin(), keep - 1);
   }
 

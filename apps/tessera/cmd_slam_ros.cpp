@@ -22,6 +22,7 @@ nlohmann::json node_stats_json(const nodes::SlamNodeStats& s) {
   return {{"scans_received", s.scans_received},
           {"scans_added", s.scans_added},
           {"scans_dropped_invalid", s.scans_dropped_invalid},
+          {"readings_dropped_invalid", s.readings_dropped_invalid},
           {"scans_dropped_no_pose", s.scans_dropped_no_pose},
           {"scans_dropped_overflow", s.scans_dropped_overflow},
           {"odometry_received", s.odometry_received},

@@ -117,6 +117,22 @@ struct SlamNode::State {
       ++stats.scans_dropped_invalid;
       return;
     }
+    // REP-117: +inf (and beyond range_max) is "nothing seen", a no-return that clears free space;
+    // NaN is an erroneous reading and a negative range is none at all. Those are not used (a range
+    // of 0 is below every minimum range) and are counted; a scan with nothing else is dropped.
+    std::size_t erroneous = 0;
+    for (std::size_t i = 0; i < m->ranges_m.size(); ++i) {
+      const float r = m->ranges_m[i];
+      if (std::isnan(r) || r < 0.0F) {
+        scan->ranges_m[i] = 0.0;
+        ++erroneous;
+      }
+    }
+    stats.readings_dropped_invalid += erroneous;
+    if (erroneous == m->ranges_m.size()) {
+      ++stats.scans_dropped_invalid;
+      return;
+    }
     if (pending.size() >= options.queue_depth) {
       pending.pop_front();
       ++stats.scans_dropped_overflow;
@@ -142,6 +158,7 @@ struct SlamNode::State {
     const auto at = std::upper_bound(odometry.begin(), odometry.end(), o.t_ns,
                                      [](std::int64_t t, const PoseAtNs& x) { return t < x.t_ns; });
     odometry.insert(at, o);
+    prune_odometry();
   }
 
   void on_tf(std::span<const std::uint8_t> cdr, bool is_static) {

@@ -105,9 +105,19 @@ TEST(SlamNode, BadMessagesAreDroppedAndCounted) {
   nan_odom.pose.x_m = std::nan("");
   ASSERT_TRUE(sender->publish(*odom_w, encode_cdr(nan_odom)).ok());
   ASSERT_TRUE(sender->publish(*odom_w, garbage).ok());
+  LaserScanMessage broken;  // every reading NaN or negative: nothing to map
+  broken.header.frame_id = "base_link";
+  broken.angle_increment_rad = 0.01F;
+  broken.range_max_m = 10.0F;
+  broken.ranges_m = {std::nanf(""), -1.0F, std::nanf("")};
+  ASSERT_TRUE(sender->publish(*scan_w, encode_cdr(broken)).ok());
+  LaserScanMessage some = broken;  // two usable readings, one no-return (+inf), two erroneous
+  some.ranges_m = {2.0F, std::nanf(""), INFINITY, -0.5F, 3.0F};
+  ASSERT_TRUE(sender->publish(*scan_w, encode_cdr(some)).ok());
   ASSERT_TRUE((*node)->spin_once().ok());
-  EXPECT_EQ((*node)->stats().scans_received, 2U);
-  EXPECT_EQ((*node)->stats().scans_dropped_invalid, 2U);
+  EXPECT_EQ((*node)->stats().scans_received, 4U);
+  EXPECT_EQ((*node)->stats().scans_dropped_invalid, 3U);
+  EXPECT_EQ((*node)->stats().readings_dropped_invalid, 5U);
   EXPECT_EQ((*node)->stats().odometry_dropped_invalid, 2U);
   EXPECT_FALSE((*node)->started());
   const auto nothing = (*node)->finish();

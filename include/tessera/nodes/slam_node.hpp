@@ -35,9 +35,10 @@ struct SlamNodeOptions {
 struct SlamNodeStats {
   std::uint64_t scans_received = 0;
   std::uint64_t scans_added = 0;
-  std::uint64_t scans_dropped_invalid = 0;   // did not decode, or unusable angles and ranges
-  std::uint64_t scans_dropped_no_pose = 0;   // no odometry or no laser transform for them
-  std::uint64_t scans_dropped_overflow = 0;  // the wait queue was full
+  std::uint64_t scans_dropped_invalid = 0;     // did not decode, unusable angles, no valid range
+  std::uint64_t readings_dropped_invalid = 0;  // NaN or negative ranges (REP-117), not used
+  std::uint64_t scans_dropped_no_pose = 0;     // no odometry or no laser transform for them
+  std::uint64_t scans_dropped_overflow = 0;    // the wait queue was full
   std::uint64_t odometry_received = 0;
   std::uint64_t odometry_dropped_invalid = 0;  // did not decode or not finite
   std::uint64_t maps_published = 0;

@@ -191,6 +191,8 @@ TEST(DdsTransport, BytesThatDoNotFitTheTypeAreRefusedBeforeTheyReachTheWire) {
   EXPECT_FALSE(a->publish(*w, message).ok());
   const Bytes no_header{1, 2};
   EXPECT_THAT(a->publish(*w, no_header).error().message, HasSubstr("encapsulation"));
+  const Bytes header_only{0, 1, 0, 0};
+  EXPECT_THAT(a->publish(*w, header_only).error().message, HasSubstr("no fields"));
   EXPECT_EQ(a->traffic().count(topic("/scan")), 0U);  // nothing counted as sent
 }
 

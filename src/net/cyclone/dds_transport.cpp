@@ -194,6 +194,7 @@ class DdsTransport final : public Transport {
     if (cdr.size() < 4 || cdr[0] != 0x00 || (cdr[1] != 0x00 && cdr[1] != 0x01)) {
       return input_error(what + ": no plain CDR encapsulation header");
     }
+    if (cdr.size() == 4) return input_error(what + ": no fields after the header");
     // Cyclone's validator checks every length and bound against the type and byte-swaps a big
     // endian message in place, so it works on a copy of the body.
     body_.assign(cdr.begin() + 4, cdr.end());

@@ -1,0 +1,47 @@
+#pragma once
+// The team's map from its robots' maps (issue 14; the lecture: robots exploring in parallel share
+// partial maps). Each robot publishes its own SLAM map (nav_msgs/OccupancyGrid) in its own map
+// frame; with the pose of each map frame in the team's frame (known start poses, or found by map
+// matching), the merged map holds, per cell of one grid over all of them, the sum of the robots'
+// log-odds at the cell's centre: each robot's evidence counts once (their sensors are independent),
+// unknown where no robot has seen the cell. Maps of another resolution than the team's are refused
+// (the caller counts them): resampling would blur walls the team relies on.
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "tessera/core/pose2.hpp"
+#include "tessera/core/result.hpp"
+#include "tessera/grid/occupancy_grid.hpp"
+#include "tessera/io/ros_message_encoders.hpp"
+
+namespace tessera::team {
+
+class MapMerger {
+ public:
+  /// Precondition: resolution_m > 0.
+  explicit MapMerger(double resolution_m);
+
+  /// Keeps `map` as `robot`'s latest, its frame at T_team_map. kInput error, naming the robot and
+  /// both resolutions, when the map's resolution differs from the team's by more than 0.1 %, and
+  /// when its size or data do not agree (width x height != data size, non-finite origin). O(1)
+  /// besides the copy.
+  [[nodiscard]] Status update(const std::string& robot, const OccupancyGridMessage& map,
+                              const Pose2& T_team_map);
+  /// How many robots have a map in the team's. A robot that dies keeps its last map here.
+  [[nodiscard]] std::size_t robots() const { return maps_.size(); }
+
+  /// The merged grid over the union of the maps' extents (empty without maps), axis-aligned with
+  /// the team frame. Cost: O(cells of the merged grid x robots).
+  [[nodiscard]] OccupancyGrid merged() const;
+
+ private:
+  struct RobotMap {
+    OccupancyGridMessage map;
+    Pose2 T_team_map;
+  };
+  double resolution_m_;
+  std::map<std::string, RobotMap> maps_;
+};
+
+}  // namespace tessera::team

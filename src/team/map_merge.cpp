@@ -1,0 +1,97 @@
+// The team's merged map (team/map_merge.hpp).
+#include "tessera/team/map_merge.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tessera/io/tf_tree.hpp"
+
+namespace tessera::team {
+namespace {
+
+// The corners of a robot map in the team frame, for the merged grid's extent.
+void extend(const OccupancyGridMessage& m, const Pose2& T_team_map, double& min_x, double& min_y,
+            double& max_x, double& max_y) {
+  const Pose2 T_map_origin = planar_pose(m.origin);
+  const double w = m.width * static_cast<double>(m.resolution_m);
+  const double h = m.height * static_cast<double>(m.resolution_m);
+  for (const Vec2 corner : {Vec2{0, 0}, Vec2{w, 0}, Vec2{0, h}, Vec2{w, h}}) {
+    const Vec2 p = T_team_map * (T_map_origin * corner);
+    min_x = std::min(min_x, p.x);
+    min_y = std::min(min_y, p.y);
+    max_x = std::max(max_x, p.x);
+    max_y = std::max(max_y, p.y);
+  }
+}
+
+}  // namespace
+
+MapMerger::MapMerger(double resolution_m) : resolution_m_(resolution_m) {}
+
+Status MapMerger::update(const std::string& robot, const OccupancyGridMessage& map,
+                         const Pose2& T_team_map) {
+  const double r = map.resolution_m;
+  if (!(std::abs(r - resolution_m_) <= 1e-3 * resolution_m_)) {
+    return input_error("map of " + robot + ": resolution " + std::to_string(r) +
+                       " m, the team's is " + std::to_string(resolution_m_) + " m");
+  }
+  if (static_cast<std::uint64_t>(map.width) * map.height != map.data.size()) {
+    return input_error("map of " + robot + ": " + std::to_string(map.width) + " x " +
+                       std::to_string(map.height) + " cells but " +
+                       std::to_string(map.data.size()) + " values");
+  }
+  for (const double v : {map.origin.x_m, map.origin.y_m, map.origin.qz, map.origin.qw, T_team_map.x,
+                         T_team_map.y, T_team_map.theta}) {
+    if (!std::isfinite(v)) return input_error("map of " + robot + ": origin is not finite");
+  }
+  maps_[robot] = {map, T_team_map};
+  return Ok{};
+}
+
+OccupancyGrid MapMerger::merged() const {
+  double min_x = std::numeric_limits<double>::infinity(), min_y = min_x;
+  double max_x = -min_x, max_y = -min_x;
+  for (const auto& [robot, m] : maps_) {
+    if (m.map.width > 0 && m.map.height > 0) {
+      extend(m.map, m.T_team_map, min_x, min_y, max_x, max_y);
+    }
+  }
+  if (!(min_x < max_x && min_y < max_y)) return OccupancyGrid{};
+  // A map's extent is a whole number of cells up to rounding (resolutions travel as float32).
+  const auto cells = [&](double extent_m) {
+    return std::max(1, static_cast<int>(std::ceil(extent_m / resolution_m_ - 1e-4)));
+  };
+  const int width = cells(max_x - min_x);
+  const int height = cells(max_y - min_y);
+  OccupancyGrid out(GridGeometry({min_x, min_y}, resolution_m_, width, height));
+  const GridGeometry& g = out.geometry();
+  for (const auto& [robot, m] : maps_) {
+    // The team cell centre in the robot map's grid: T_origin_team.
+    const Pose2 T_origin_team = (m.T_team_map * planar_pose(m.map.origin)).inverse();
+    const double r = m.map.resolution_m;
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        const Vec2 p = T_origin_team * g.center_of({x, y});
+        const long cx = std::lround(std::floor(p.x / r));
+        const long cy = std::lround(std::floor(p.y / r));
+        if (cx < 0 || cy < 0 || cx >= m.map.width || cy >= m.map.height) continue;
+        const std::int8_t v =
+            m.map.data[static_cast<std::size_t>(cy) * m.map.width + static_cast<std::size_t>(cx)];
+        if (v < 0 || v > 100) continue;  // unknown (-1), or not a probability
+        // 0 and 100 percent are a robot's certainty, kept finite: 0.5 % and 99.5 %.
+        const double p_occ = std::clamp(v / 100.0, 0.005, 0.995);
+        const Cell c{x, y};
+        if (out.known(c)) {
+          out.add_log_odds(c, log_odds(p_occ), -std::numeric_limits<float>::max(),
+                           std::numeric_limits<float>::max());
+        } else {
+          out.set_probability(c, p_occ);
+        }
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace tessera::team

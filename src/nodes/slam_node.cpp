@@ -211,15 +211,17 @@ struct SlamNode::State {
     return true;
   }
 
-  // Odometry older than the newest message by kOdometryKept_ns goes (memory stays bounded): a
-  // log's stamps go backwards by up to about a second, so a later scan may still need any message
-  // younger than that, even one older than the scan just added.
+  // Odometry goes once no waiting scan can need it: older than every pending scan and than the
+  // newest message by kOdometryKept_ns (a log's stamps go backwards by up to about a second, so a
+  // scan still to come may need a message older than the scan just added). Memory stays bounded
+  // by the wait queue and that window, however far SLAM falls behind.
   void prune_odometry() {
     constexpr std::int64_t kOdometryKept_ns = 10'000'000'000;
     std::int64_t oldest = 0;  // a peer's stamps may be anything: no signed overflow
     if (__builtin_sub_overflow(odometry.back().t_ns, kOdometryKept_ns, &oldest)) {
       oldest = std::numeric_limits<std::int64_t>::min();
     }
+    for (const PendingScan& p : pending) oldest = std::min(oldest, p.t_ns);
     const auto keep =
         std::lower_bound(odometry.begin(), odometry.end(), oldest,
                          [](const PoseAtNs& o, std::int64_t v) { return o.t_ns < v; });

@@ -221,6 +221,44 @@ TEST(SlamNode, ScansArrivingTogetherWithBackwardStampsEachGetTheirOwnOdometry) {
   EXPECT_NEAR(result->trajectory[2].pose.x - result->trajectory[0].pose.x, 0.4, 0.1);
 }
 
+TEST(SlamNode, AScanWaitingLongKeepsItsOdometry) {
+  // SLAM can fall seconds behind the sensors: the odometry of a scan still waiting must survive
+  // however much newer odometry arrives meanwhile.
+  const LaserLog& log = office_log();
+  net::InProcessBus bus;
+  auto sender = bus.join();
+  auto slam_side = bus.join();
+  auto node = SlamNode::create({}, *slam_side);
+  ASSERT_TRUE(node.ok());
+  const auto scan_w = sender->advertise({"/scan", std::string(kRos2LaserScan), Qos::sensor_data()});
+  const auto odom_w = sender->advertise({"/odom", std::string(kRos2Odometry), Qos::sensor_data()});
+  auto odom_at = [&](std::int64_t t_ns, double x_m) {
+    OdometryMessage odom;
+    odom.header = {t_ns, "odom"};
+    odom.child_frame_id = "base_link";
+    odom.pose = planar_transform(x_m, 0.0, 0.0);
+    ASSERT_TRUE(sender->publish(*odom_w, encode_cdr(odom)).ok());
+  };
+  auto scan_at = [&](std::int64_t t_ns) {
+    ASSERT_TRUE(
+        sender
+            ->publish(*scan_w, encode_cdr(laser_scan_message(log.scans[0].scan, t_ns, "base_link")))
+            .ok());
+  };
+  odom_at(1'000'000'000, 0.0);
+  scan_at(1'000'000'000);
+  ASSERT_EQ(*(*node)->spin_once(), 1);
+  // A scan at 2 s without its odometry, then 30 s of odometry at 10 Hz from 2 s on (x = 0.5 m at
+  // 2 s); the scan is still waiting when the last of it arrives.
+  scan_at(2'000'000'000);
+  for (int i = 0; i <= 300; ++i) odom_at(2'000'000'000 + i * 100'000'000LL, 0.5 + 0.01 * i);
+  EXPECT_EQ(*(*node)->spin_once(), 1);
+  const auto result = (*node)->finish();
+  ASSERT_TRUE(result.ok());
+  ASSERT_EQ(result->trajectory.size(), 2U);
+  EXPECT_NEAR(result->trajectory[1].pose.x - result->trajectory[0].pose.x, 0.5, 0.1);
+}
+
 TEST(SlamNode, InvalidOptionsAndNamespacesAreRefused) {
   net::InProcessBus bus;
   auto t = bus.join();

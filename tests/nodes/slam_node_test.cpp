@@ -125,138 +125,108 @@ TEST(SlamNode, BadMessagesAreDroppedAndCounted) {
   EXPECT_THAT(nothing.error().message, HasSubstr("no scan with odometry arrived"));
 }
 
-TEST(SlamNode, AScanWaitsForItsOdometryAndItsLaserTransform) {
-  const LaserLog& log = office_log();
-  net::InProcessBus bus;
-  auto sender = bus.join();
-  auto slam_side = bus.join();
-  auto node = SlamNode::create({}, *slam_side);
-  ASSERT_TRUE(node.ok());
-  const auto scan_w = sender->advertise({"/scan", std::string(kRos2LaserScan), Qos::sensor_data()});
-  const auto odom_w = sender->advertise({"/odom", std::string(kRos2Odometry), Qos::sensor_data()});
+// A SLAM node on an in-process bus and a sender of hand-made scans and odometry.
+class SlamNodeInputs : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto created = SlamNode::create({}, *slam_side_);
+    ASSERT_TRUE(created.ok());
+    node = std::move(*created);
+    scan_w_ = *sender_->advertise({"/scan", std::string(kRos2LaserScan), Qos::sensor_data()});
+    odom_w_ = *sender_->advertise({"/odom", std::string(kRos2Odometry), Qos::sensor_data()});
+  }
+  // The first scan of the office run, taken at t_ns in `frame`.
+  void scan_at(std::int64_t t_ns, const std::string& frame = "base_link") {
+    const auto cdr = encode_cdr(laser_scan_message(office_log().scans[0].scan, t_ns, frame));
+    ASSERT_TRUE(sender_->publish(scan_w_, cdr).ok());
+  }
+  // Odometry at t_ns: the robot at x_m along the odometry frame's x axis.
+  void odom_at(std::int64_t t_ns, double x_m = 0.0) {
+    OdometryMessage odom;
+    odom.header = {t_ns, "odom"};
+    odom.child_frame_id = "base_link";
+    odom.pose = planar_transform(x_m, 0.0, 0.0);
+    ASSERT_TRUE(sender_->publish(odom_w_, encode_cdr(odom)).ok());
+  }
+  [[nodiscard]] int spin() { return *node->spin_once(); }
+  // x of each mapped scan relative to the first, from the final trajectory.
+  [[nodiscard]] std::vector<double> mapped_x() {
+    const auto result = node->finish();
+    EXPECT_TRUE(result.ok());
+    std::vector<double> x;
+    if (!result.ok()) return x;
+    for (const StampedPose2& p : result->trajectory)
+      x.push_back(p.pose.x - result->trajectory[0].pose.x);
+    return x;
+  }
+
+  net::InProcessBus bus_;
+  std::unique_ptr<net::Transport> sender_ = bus_.join();
+  std::unique_ptr<net::Transport> slam_side_ = bus_.join();
+  std::unique_ptr<SlamNode> node;
+  net::Transport::WriterId scan_w_ = 0, odom_w_ = 0;
+};
+
+TEST_F(SlamNodeInputs, AScanWaitsForItsOdometryAndItsLaserTransform) {
   const auto tf_w =
-      sender->advertise({"/tf_static", std::string(kRos2TfMessage), Qos::tf_static()});
+      sender_->advertise({"/tf_static", std::string(kRos2TfMessage), Qos::tf_static()});
   const std::int64_t t0 = 1'000'000'000;
-  ASSERT_TRUE(
-      sender->publish(*scan_w, encode_cdr(laser_scan_message(log.scans[0].scan, t0, "laser")))
-          .ok());
-  ASSERT_EQ(*(*node)->spin_once(), 0);  // no odometry yet
-  OdometryMessage odom;
-  odom.header = {t0, "odom"};
-  odom.child_frame_id = "base_link";
-  ASSERT_TRUE(sender->publish(*odom_w, encode_cdr(odom)).ok());
-  ASSERT_EQ(*(*node)->spin_once(), 0);  // odometry, but no base_link -> laser yet
+  scan_at(t0, "laser");
+  ASSERT_EQ(spin(), 0);  // no odometry yet
+  odom_at(t0);
+  ASSERT_EQ(spin(), 0);  // odometry, but no base_link -> laser yet
   TfMessage statics;
   statics.transforms.push_back(
       planar_transform_stamped(Pose2{0.1, 0, 0}, t0, "base_link", "laser"));
-  ASSERT_TRUE(sender->publish(*tf_w, encode_cdr(statics)).ok());
-  EXPECT_EQ(*(*node)->spin_once(), 1);
-  EXPECT_TRUE((*node)->started());
+  ASSERT_TRUE(sender_->publish(*tf_w, encode_cdr(statics)).ok());
+  EXPECT_EQ(spin(), 1);
+  EXPECT_TRUE(node->started());
 }
 
-TEST(SlamNode, AScanStampedBeforeTheLastOneWaitsForItsOwnOdometry) {
+TEST_F(SlamNodeInputs, AScanStampedBeforeTheLastOneWaitsForItsOwnOdometry) {
   // Real logs' stamps go backwards now and then (265 times in the Intel raw log); DDS may deliver
   // such a scan before its odometry. It must not take the odometry around it from older messages.
-  const LaserLog& log = office_log();
-  net::InProcessBus bus;
-  auto sender = bus.join();
-  auto slam_side = bus.join();
-  auto node = SlamNode::create({}, *slam_side);
-  ASSERT_TRUE(node.ok());
-  const auto scan_w = sender->advertise({"/scan", std::string(kRos2LaserScan), Qos::sensor_data()});
-  const auto odom_w = sender->advertise({"/odom", std::string(kRos2Odometry), Qos::sensor_data()});
-  auto send = [&](std::int64_t t_ns, bool scan) {
-    if (scan) {
-      ASSERT_TRUE(sender
-                      ->publish(*scan_w, encode_cdr(laser_scan_message(log.scans[0].scan, t_ns,
-                                                                       "base_link")))
-                      .ok());
-      return;
-    }
-    OdometryMessage odom;
-    odom.header = {t_ns, "odom"};
-    odom.child_frame_id = "base_link";
-    ASSERT_TRUE(sender->publish(*odom_w, encode_cdr(odom)).ok());
-  };
-  send(2'000'000'000, false);
-  send(2'000'000'000, true);
-  EXPECT_EQ(*(*node)->spin_once(), 1);
-  send(1'500'000'000, true);  // backwards, and before its odometry
-  EXPECT_EQ(*(*node)->spin_once(), 0);
-  send(1'500'000'000, false);
-  EXPECT_EQ(*(*node)->spin_once(), 1);
+  odom_at(2'000'000'000);
+  scan_at(2'000'000'000);
+  EXPECT_EQ(spin(), 1);
+  scan_at(1'500'000'000);  // backwards, and before its odometry
+  EXPECT_EQ(spin(), 0);
+  odom_at(1'500'000'000);
+  EXPECT_EQ(spin(), 1);
 }
 
-TEST(SlamNode, ScansArrivingTogetherWithBackwardStampsEachGetTheirOwnOdometry) {
+TEST_F(SlamNodeInputs, ScansArrivingTogetherWithBackwardStampsEachGetTheirOwnOdometry) {
   // DDS hands over whatever arrived since the last poll: here a scan at 10 s, then two stamped
   // 9.2 s and 9.4 s, with their odometry. Each must get the odometry of its own stamp, although
   // the one at 10 s is added first (an odometry buffer pruned up to it would have lost 9.2 s).
-  const LaserLog& log = office_log();
-  net::InProcessBus bus;
-  auto sender = bus.join();
-  auto slam_side = bus.join();
-  auto node = SlamNode::create({}, *slam_side);
-  ASSERT_TRUE(node.ok());
-  const auto scan_w = sender->advertise({"/scan", std::string(kRos2LaserScan), Qos::sensor_data()});
-  const auto odom_w = sender->advertise({"/odom", std::string(kRos2Odometry), Qos::sensor_data()});
-  const std::pair<std::int64_t, double> stamps_and_x[] = {
-      {10'000'000'000, 0.0}, {9'200'000'000, 0.8}, {9'400'000'000, 0.4}};
-  for (const auto& [t_ns, x_m] : stamps_and_x) {
-    OdometryMessage odom;
-    odom.header = {t_ns, "odom"};
-    odom.child_frame_id = "base_link";
-    odom.pose = planar_transform(x_m, 0.0, 0.0);
-    ASSERT_TRUE(sender->publish(*odom_w, encode_cdr(odom)).ok());
-    ASSERT_TRUE(
-        sender
-            ->publish(*scan_w, encode_cdr(laser_scan_message(log.scans[0].scan, t_ns, "base_link")))
-            .ok());
+  for (const auto& [t_ns, x_m] : {std::pair<std::int64_t, double>{10'000'000'000, 0.0},
+                                  {9'200'000'000, 0.8},
+                                  {9'400'000'000, 0.4}}) {
+    odom_at(t_ns, x_m);
+    scan_at(t_ns);
   }
-  EXPECT_EQ(*(*node)->spin_once(), 3);
-  const auto result = (*node)->finish();
-  ASSERT_TRUE(result.ok());
-  ASSERT_EQ(result->trajectory.size(), 3U);
+  EXPECT_EQ(spin(), 3);
   // The same scan seen from x = 0, 0.8 and 0.4 m: local matching keeps the odometry's offsets.
-  EXPECT_NEAR(result->trajectory[1].pose.x - result->trajectory[0].pose.x, 0.8, 0.1);
-  EXPECT_NEAR(result->trajectory[2].pose.x - result->trajectory[0].pose.x, 0.4, 0.1);
+  const std::vector<double> x = mapped_x();
+  ASSERT_EQ(x.size(), 3U);
+  EXPECT_NEAR(x[1], 0.8, 0.1);
+  EXPECT_NEAR(x[2], 0.4, 0.1);
 }
 
-TEST(SlamNode, AScanWaitingLongKeepsItsOdometry) {
+TEST_F(SlamNodeInputs, AScanWaitingLongKeepsItsOdometry) {
   // SLAM can fall seconds behind the sensors: the odometry of a scan still waiting must survive
   // however much newer odometry arrives meanwhile.
-  const LaserLog& log = office_log();
-  net::InProcessBus bus;
-  auto sender = bus.join();
-  auto slam_side = bus.join();
-  auto node = SlamNode::create({}, *slam_side);
-  ASSERT_TRUE(node.ok());
-  const auto scan_w = sender->advertise({"/scan", std::string(kRos2LaserScan), Qos::sensor_data()});
-  const auto odom_w = sender->advertise({"/odom", std::string(kRos2Odometry), Qos::sensor_data()});
-  auto odom_at = [&](std::int64_t t_ns, double x_m) {
-    OdometryMessage odom;
-    odom.header = {t_ns, "odom"};
-    odom.child_frame_id = "base_link";
-    odom.pose = planar_transform(x_m, 0.0, 0.0);
-    ASSERT_TRUE(sender->publish(*odom_w, encode_cdr(odom)).ok());
-  };
-  auto scan_at = [&](std::int64_t t_ns) {
-    ASSERT_TRUE(
-        sender
-            ->publish(*scan_w, encode_cdr(laser_scan_message(log.scans[0].scan, t_ns, "base_link")))
-            .ok());
-  };
-  odom_at(1'000'000'000, 0.0);
+  odom_at(1'000'000'000);
   scan_at(1'000'000'000);
-  ASSERT_EQ(*(*node)->spin_once(), 1);
+  ASSERT_EQ(spin(), 1);
   // A scan at 2 s without its odometry, then 30 s of odometry at 10 Hz from 2 s on (x = 0.5 m at
   // 2 s); the scan is still waiting when the last of it arrives.
   scan_at(2'000'000'000);
   for (int i = 0; i <= 300; ++i) odom_at(2'000'000'000 + i * 100'000'000LL, 0.5 + 0.01 * i);
-  EXPECT_EQ(*(*node)->spin_once(), 1);
-  const auto result = (*node)->finish();
-  ASSERT_TRUE(result.ok());
-  ASSERT_EQ(result->trajectory.size(), 2U);
-  EXPECT_NEAR(result->trajectory[1].pose.x - result->trajectory[0].pose.x, 0.5, 0.1);
+  EXPECT_EQ(spin(), 1);
+  const std::vector<double> x = mapped_x();
+  ASSERT_EQ(x.size(), 2U);
+  EXPECT_NEAR(x[1], 0.5, 0.1);
 }
 
 TEST(SlamNode, InvalidOptionsAndNamespacesAreRefused) {

@@ -2,6 +2,7 @@
 // by its stamps, so that `tessera slam --ros` (or any ROS 2 node) runs on real data.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -74,7 +75,8 @@ int PlayCommand::run() const {
     if (done % 25 == 0) progress.show("play: scan", done, total, "scans");
   }
   progress.finish();
-  // Reliable writers resend what a reader missed; give the last scans time to arrive.
+  // The last scans may still be on their way (a reliable reader may ask for a resend): the
+  // writers stay a moment before they go.
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
   if (!quiet_) {
     fmt::print("play: {} scans published in {:.1f} s\n", (*player)->published(), seconds_since(t0));

@@ -75,6 +75,7 @@ struct SimNode::State {
     double w_rad_per_s = 0.0;
     std::int64_t command_tick = -1;  // when the last command arrived; -1: none yet
     std::uint64_t stalls = 0;
+    RosTwist moving{};  // the velocity of the last step (zero when stopped or stalled)
     Transport::WriterId scan = 0, odom = 0, truth = 0;
   };
 
@@ -169,6 +170,7 @@ struct SimNode::State {
     const bool fresh = r.command_tick >= 0 && tick - r.command_tick <= timeout_ticks;
     const double v = fresh ? r.v_m_per_s : 0.0;
     const double w = fresh ? r.w_rad_per_s : 0.0;
+    r.moving = RosTwist{};
     if (v == 0.0 && w == 0.0) return;
     const double dt = options.physics_step_s;
     const Pose2 next = r.drive.true_pose() * arc_motion(v, w, dt);
@@ -177,6 +179,8 @@ struct SimNode::State {
       return;
     }
     r.drive.step(v, w, dt);
+    r.moving.linear_x_mps = v;
+    r.moving.angular_z_radps = w;
   }
 
   Status publish_due() {
@@ -195,10 +199,7 @@ struct SimNode::State {
         }
       }
       if (!odom_due) continue;
-      const bool fresh = r.command_tick >= 0 && tick - r.command_tick <= timeout_ticks;
-      RosTwist twist;
-      twist.linear_x_mps = fresh ? r.v_m_per_s : 0.0;
-      twist.angular_z_radps = fresh ? r.w_rad_per_s : 0.0;
+      const RosTwist& twist = r.moving;
       const Pose2 T_odom_robot = r.start.inverse() * r.drive.odometry_pose();
       OdometryMessage odom;
       odom.header = {stamp, r.name + "/odom"};

@@ -140,6 +140,18 @@ TEST(SimNode, AWallStopsTheRobot) {
   EXPECT_LE((*sim)->true_pose(0).x, 5.9 - 0.15 + 1e-9);
   EXPECT_GT((*sim)->true_pose(0).x, 5.6);
   EXPECT_GT((*sim)->stalls(0), 0U);
+  // Against the wall, odometry reports the robot standing, although it is still commanded.
+  std::vector<std::vector<std::uint8_t>> odoms;
+  l.listen("/r1/odom", kRos2Odometry, Qos::sensor_data(), odoms);
+  for (int i = 0; i < 10; ++i) {
+    l.drive(cmd, 0.7, 0.0);
+    ASSERT_TRUE((*sim)->step().ok());
+    l.t->poll();
+  }
+  ASSERT_FALSE(odoms.empty());
+  const auto odom = decode_odometry(odoms.back(), RosEncoding::kCdr);
+  ASSERT_TRUE(odom.ok());
+  EXPECT_EQ(odom->twist.linear_x_mps, 0.0);
 }
 
 TEST(SimNode, MalformedCommandsAreDroppedAndCounted) {

@@ -27,6 +27,13 @@ Result<Transport::WriterId> Transport::advertise(const TopicSpec& topic) {
   return id;
 }
 
+Status Transport::advertise(const TopicSpec& topic, WriterId& into) {
+  Result<WriterId> id = advertise(topic);
+  if (!id.ok()) return id.error();
+  into = *id;
+  return Ok{};
+}
+
 Status Transport::publish(WriterId writer, std::span<const std::uint8_t> cdr) {
   const auto topic = writer_topics_.find(writer);
   if (topic == writer_topics_.end()) {

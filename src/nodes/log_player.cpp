@@ -34,20 +34,14 @@ Result<std::unique_ptr<LogPlayer>> LogPlayer::create(const LaserLog& log,
     state->frame_prefix = options.ns.substr(options.ns.front() == '/' ? 1 : 0) + "/";
   }
   const Qos sensors = Qos::reliable(options.depth);
-  auto advertise = [&](Transport::WriterId& id, const std::string& topic, std::string_view type,
-                       const Qos& qos) -> Status {
-    Result<Transport::WriterId> w = transport.advertise({topic, std::string(type), qos});
-    if (!w.ok()) return w.error();
-    id = *w;
-    return Ok{};
-  };
   State& s = *state;
-  const Qos clock_qos{Qos::Reliability::kBestEffort, Qos::Durability::kVolatile, 1};
+  const std::string odom_topic = *net::resolve_topic_name("odom", options.ns);
   for (Status st :
-       {advertise(s.scan, *scan_topic, kRos2LaserScan, sensors),
-        advertise(s.odom, *net::resolve_topic_name("odom", options.ns), kRos2Odometry, sensors),
-        advertise(s.clock, "/clock", kRos2Clock, clock_qos),
-        advertise(s.tf_static, "/tf_static", kRos2TfMessage, Qos::tf_static())}) {
+       {transport.advertise({*scan_topic, std::string(kRos2LaserScan), sensors}, s.scan),
+        transport.advertise({odom_topic, std::string(kRos2Odometry), sensors}, s.odom),
+        transport.advertise({"/clock", std::string(kRos2Clock), Qos::clock()}, s.clock),
+        transport.advertise({"/tf_static", std::string(kRos2TfMessage), Qos::tf_static()},
+                            s.tf_static)}) {
     if (!st.ok()) return st.error();
   }
   TfMessage statics;

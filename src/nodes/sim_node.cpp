@@ -108,10 +108,7 @@ struct SimNode::State {
 
   Status advertise(Transport::WriterId& id, const std::string& topic, std::string_view type,
                    const Qos& qos) {
-    Result<Transport::WriterId> w = transport.advertise({topic, std::string(type), qos});
-    if (!w.ok()) return w.error();
-    id = *w;
-    return Ok{};
+    return transport.advertise({topic, std::string(type), qos}, id);
   }
 
   Status connect() {
@@ -119,8 +116,7 @@ struct SimNode::State {
     if (Status s = advertise(tf_static, "/tf_static", kRos2TfMessage, Qos::tf_static()); !s.ok()) {
       return s;
     }
-    const Qos clock_qos{Qos::Reliability::kBestEffort, Qos::Durability::kVolatile, 1};
-    if (Status s = advertise(clock, "/clock", kRos2Clock, clock_qos); !s.ok()) return s;
+    if (Status s = advertise(clock, "/clock", kRos2Clock, Qos::clock()); !s.ok()) return s;
     for (std::size_t i = 0; i < robots.size(); ++i) {
       Robot& r = robots[i];
       const std::string ns = "/" + r.name;

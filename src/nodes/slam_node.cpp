@@ -54,7 +54,6 @@ struct SlamNode::State {
   std::string odom_frame, base_frame;
   TfTree tf;
   Transport::WriterId map_writer = 0, tf_writer = 0, pose_writer = 0;
-  std::string map_topic;
   SteadyClock::time_point last_map{};
   bool started = false;
 
@@ -64,11 +63,10 @@ struct SlamNode::State {
     Result<std::string> scan_topic = net::resolve_topic_name("scan", options.ns);
     if (!scan_topic.ok()) return scan_topic.error();
     const std::string odom_topic = *net::resolve_topic_name("odom", options.ns);
-    map_topic = *net::resolve_topic_name("map", options.ns);
+    const std::string map_topic = *net::resolve_topic_name("map", options.ns);
+    // Best effort matches any driver's publisher; the deep queue holds what SLAM has not read.
     const Qos sensors{Qos::Reliability::kBestEffort, Qos::Durability::kVolatile,
                       options.queue_depth};
-    const Qos odom_qos{Qos::Reliability::kBestEffort, Qos::Durability::kVolatile,
-                       options.queue_depth};
     auto sub = [&](const std::string& topic, std::string_view type, const Qos& qos,
                    Transport::Handler h) -> Status {
       Result<Transport::ReaderId> r = transport.subscribe({topic, std::string(type), qos}, h);
@@ -79,7 +77,7 @@ struct SlamNode::State {
         !s.ok()) {
       return s;
     }
-    if (Status s = sub(odom_topic, kRos2Odometry, odom_qos, [this](auto cdr) { on_odom(cdr); });
+    if (Status s = sub(odom_topic, kRos2Odometry, sensors, [this](auto cdr) { on_odom(cdr); });
         !s.ok()) {
       return s;
     }
@@ -92,19 +90,15 @@ struct SlamNode::State {
         !s.ok()) {
       return s;
     }
-    Result<Transport::WriterId> m =
-        transport.advertise({map_topic, std::string(kRos2OccupancyGrid), Qos::map()});
-    if (!m.ok()) return m.error();
-    map_writer = *m;
-    Result<Transport::WriterId> t =
-        transport.advertise({"/tf", std::string(kRos2TfMessage), Qos::tf()});
-    if (!t.ok()) return t.error();
-    tf_writer = *t;
-    Result<Transport::WriterId> p =
-        transport.advertise({*net::resolve_topic_name("pose", options.ns),
-                             std::string(kRos2PoseWithCovarianceStamped), Qos::reliable(10)});
-    if (!p.ok()) return p.error();
-    pose_writer = *p;
+    const std::string pose_topic = *net::resolve_topic_name("pose", options.ns);
+    for (Status st :
+         {transport.advertise({map_topic, std::string(kRos2OccupancyGrid), Qos::map()}, map_writer),
+          transport.advertise({"/tf", std::string(kRos2TfMessage), Qos::tf()}, tf_writer),
+          transport.advertise(
+              {pose_topic, std::string(kRos2PoseWithCovarianceStamped), Qos::reliable(10)},
+              pose_writer)}) {
+      if (!st.ok()) return st;
+    }
     return Ok{};
   }
 

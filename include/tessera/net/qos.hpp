@@ -33,6 +33,8 @@ struct Qos {
   static constexpr Qos tf_static() {
     return {Reliability::kReliable, Durability::kTransientLocal, 1};
   }
+  /// rclcpp::ClockQoS: best effort, volatile, keep last 1 (/clock: only the newest time counts).
+  static constexpr Qos clock() { return {Reliability::kBestEffort, Durability::kVolatile, 1}; }
   /// rclcpp's default (rmw_qos_profile_default): reliable, volatile, keep last `depth`.
   static constexpr Qos reliable(std::uint32_t depth) {
     return {Reliability::kReliable, Durability::kVolatile, depth};

@@ -50,6 +50,8 @@ class Transport {
   /// A writer on `topic`. kInput error for a name that is not a valid ROS 2 topic name or a type
   /// the transport cannot carry.
   [[nodiscard]] Result<WriterId> advertise(const TopicSpec& topic);
+  /// The same, storing the writer in `into`: for a node that sets up several in a row.
+  [[nodiscard]] Status advertise(const TopicSpec& topic, WriterId& into);
   /// Sends one message. kInput error when `writer` is unknown or (DDS) the bytes do not fit the
   /// type; kRuntime when the middleware fails.
   [[nodiscard]] Status publish(WriterId writer, std::span<const std::uint8_t> cdr);

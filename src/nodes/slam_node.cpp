@@ -55,7 +55,10 @@ struct SlamNode::State {
   TfTree tf;
   Transport::WriterId map_writer = 0, tf_writer = 0, pose_writer = 0;
   SteadyClock::time_point last_map{};
+  std::int64_t last_map_stamp_ns = 0;
   bool started = false;
+  std::optional<OccupancyGrid> last_map_grid;
+  Pose2 T_map_odom;
 
   State(const SlamNodeOptions& o, Transport& t) : options(o), transport(t), slam(o.slam) {}
 
@@ -228,20 +231,27 @@ struct SlamNode::State {
     pose.header = {stamp_ns, options.map_frame};
     pose.pose = planar_transform(T_map_base.x, T_map_base.y, T_map_base.theta);
     if (Status s = transport.publish(pose_writer, encode_cdr(pose)); !s.ok()) return s;
+    T_map_odom = T_map_base * T_odom_base.inverse();
     TfMessage map_to_odom;
-    map_to_odom.transforms.push_back(planar_transform_stamped(
-        T_map_base * T_odom_base.inverse(), stamp_ns, options.map_frame, odom_frame));
+    map_to_odom.transforms.push_back(
+        planar_transform_stamped(T_map_odom, stamp_ns, options.map_frame, odom_frame));
     return transport.publish(tf_writer, encode_cdr(map_to_odom));
   }
 
-  Status publish_map(std::int64_t stamp_ns, const OccupancyGrid& map) {
+  Status publish_map(std::int64_t stamp_ns, OccupancyGrid map) {
     last_map = SteadyClock::now();
+    last_map_stamp_ns = stamp_ns;
     ++stats.maps_published;
-    return transport.publish(map_writer,
-                             encode_cdr(occupancy_grid_message(map, stamp_ns, options.map_frame)));
+    last_map_grid = std::move(map);
+    return transport.publish(
+        map_writer, encode_cdr(occupancy_grid_message(*last_map_grid, stamp_ns, options.map_frame)));
   }
 
-  [[nodiscard]] bool map_due() const {
+  [[nodiscard]] bool map_due(std::int64_t stamp_ns) const {
+    if (options.map_period_stamp_s > 0.0 && started &&
+        seconds(stamp_ns) - seconds(last_map_stamp_ns) >= options.map_period_stamp_s) {
+      return true;
+    }
     return started && (stats.maps_published == 0 ||
                        SteadyClock::now() - last_map >=
                            std::chrono::duration<double>(options.map_period_wall_s));
@@ -254,8 +264,10 @@ SlamNode::~SlamNode() = default;
 Result<std::unique_ptr<SlamNode>> SlamNode::create(const SlamNodeOptions& options,
                                                    Transport& transport) {
   if (auto problem = slam::validate(options.slam)) return usage_error("slam node: " + *problem);
-  if (!(options.map_period_wall_s > 0.0) || options.queue_depth == 0) {
-    return usage_error("slam node: map_period_wall_s and queue_depth must be > 0");
+  if (!(options.map_period_wall_s > 0.0) || !(options.map_period_stamp_s >= 0.0) ||
+      options.queue_depth == 0) {
+    return usage_error(
+        "slam node: map_period_wall_s and queue_depth must be > 0, map_period_stamp_s >= 0");
   }
   auto state = std::make_unique<State>(options, transport);
   if (Status s = state->connect(); !s.ok()) return s.error();
@@ -274,7 +286,7 @@ Result<int> SlamNode::spin_once() {
     if (!*progressed) break;
     last_stamp = stamp;
     ++added;
-    if (s.map_due()) {
+    if (s.map_due(last_stamp)) {
       if (Status m = s.publish_map(last_stamp, s.slam.current_map()); !m.ok()) return m.error();
     }
   }
@@ -299,5 +311,13 @@ Result<slam::LaserSlamResult> SlamNode::finish() {
 
 const SlamNodeStats& SlamNode::stats() const { return state_->stats; }
 bool SlamNode::started() const { return state_->started; }
+const OccupancyGrid* SlamNode::map() const {
+  return state_->last_map_grid ? &*state_->last_map_grid : nullptr;
+}
+Pose2 SlamNode::T_map_odom() const { return state_->T_map_odom; }
+std::optional<PoseAtNs> SlamNode::latest_odometry() const {
+  if (state_->odometry.empty()) return std::nullopt;
+  return state_->odometry.back();
+}
 
 }  // namespace tessera::nodes

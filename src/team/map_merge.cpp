@@ -49,7 +49,7 @@ Status MapMerger::update(const std::string& robot, const OccupancyGridMessage& m
   return Ok{};
 }
 
-OccupancyGrid MapMerger::merged() const {
+GridGeometry MapMerger::extent(double margin_m) const {
   double min_x = std::numeric_limits<double>::infinity(), min_y = min_x;
   double max_x = -min_x, max_y = -min_x;
   for (const auto& [robot, m] : maps_) {
@@ -57,15 +57,27 @@ OccupancyGrid MapMerger::merged() const {
       extend(m.map, m.T_team_map, min_x, min_y, max_x, max_y);
     }
   }
-  if (!(min_x < max_x && min_y < max_y)) return OccupancyGrid{};
+  if (!(min_x < max_x && min_y < max_y)) return GridGeometry{};
+  min_x -= margin_m;
+  min_y -= margin_m;
+  max_x += margin_m;
+  max_y += margin_m;
   // A map's extent is a whole number of cells up to rounding (resolutions travel as float32).
   const auto cells = [&](double extent_m) {
     return std::max(1, static_cast<int>(std::ceil(extent_m / resolution_m_ - 1e-4)));
   };
-  const int width = cells(max_x - min_x);
-  const int height = cells(max_y - min_y);
-  OccupancyGrid out(GridGeometry({min_x, min_y}, resolution_m_, width, height));
-  const GridGeometry& g = out.geometry();
+  return GridGeometry({min_x, min_y}, resolution_m_, cells(max_x - min_x), cells(max_y - min_y));
+}
+
+OccupancyGrid MapMerger::merged() const {
+  const GridGeometry g = extent();
+  if (g.size() == 0) return OccupancyGrid{};
+  return merged(g);
+}
+
+OccupancyGrid MapMerger::merged(const GridGeometry& g) const {
+  OccupancyGrid out(g);
+  const int width = g.width(), height = g.height();
   for (const auto& [robot, m] : maps_) {
     // The team cell centre in the robot map's grid: T_origin_team.
     const Pose2 T_origin_team = (m.T_team_map * planar_pose(m.map.origin)).inverse();

@@ -14,9 +14,12 @@
 // the two topics and even where a log's stamps go backwards.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "tessera/core/pose_interpolation.hpp"
 #include "tessera/core/result.hpp"
+#include "tessera/grid/occupancy_grid.hpp"
 #include "tessera/net/transport.hpp"
 #include "tessera/slam/laser_slam.hpp"
 
@@ -26,6 +29,9 @@ struct SlamNodeOptions {
   std::string ns;  // "" or "/r1"
   std::string map_frame = "map";
   double map_period_wall_s = 1.0;
+  /// Also publish the map whenever the scans' stamps have advanced this much since the last one
+  /// (0: off): a robot that plans on its map in simulated time faster than real time.
+  double map_period_stamp_s = 0.0;
   /// Scans waiting for odometry or for SLAM: beyond this, the oldest is dropped and counted.
   std::uint32_t queue_depth = 2000;
   slam::LaserSlamOptions slam{};
@@ -65,6 +71,15 @@ class SlamNode {
   [[nodiscard]] const SlamNodeStats& stats() const;
   /// True once a scan has been added (the pose and map exist).
   [[nodiscard]] bool started() const;
+  /// The map last published (nullptr before the first): what a planner on the robot uses.
+  [[nodiscard]] const OccupancyGrid* map() const;
+  /// How many maps have been published: a planner's "is there a newer map".
+  [[nodiscard]] std::uint64_t map_revision() const { return stats().maps_published; }
+  /// T_map_odom after the last scan added (REP-105's map -> odom); identity before the first.
+  [[nodiscard]] Pose2 T_map_odom() const;
+  /// The newest odometry message's T_odom_base and stamp; nullopt before the first. With
+  /// T_map_odom() it gives the robot's pose between scans, at the odometry's rate.
+  [[nodiscard]] std::optional<PoseAtNs> latest_odometry() const;
 
  private:
   struct State;

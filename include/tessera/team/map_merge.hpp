@@ -34,6 +34,13 @@ class MapMerger {
   /// The merged grid over the union of the maps' extents (empty without maps), axis-aligned with
   /// the team frame. Cost: O(cells of the merged grid x robots).
   [[nodiscard]] OccupancyGrid merged() const;
+  /// The same on a grid of the caller's (in the team frame, any resolution: each of its cells
+  /// takes the robots' values at its centre), e.g. a truth grid to score against or the union
+  /// extent grown by a margin for planning. Cost: O(cells of `into` x robots).
+  [[nodiscard]] OccupancyGrid merged(const GridGeometry& into) const;
+  /// The union of the maps' extents in the team frame as a grid of the team's resolution
+  /// (empty geometry without maps), grown by margin_m on every side.
+  [[nodiscard]] GridGeometry extent(double margin_m = 0.0) const;
 
  private:
   struct RobotMap {

@@ -1,0 +1,124 @@
+#pragma once
+// An exploring robot of a team as a ROS 2 node (issue 14): its own live SLAM (nodes/slam_node.hpp),
+// the team's merged map, frontier choice (team/frontier_route.hpp, lecture Algo 9.1 shared by a
+// team), and a pure-pursuit path follower (nav/path_follower.hpp) that drives it by cmd_vel. It
+// is localised by its SLAM only, never by a simulator's truth. For robot "r1" of a team:
+//   SLAM       /r1/scan, /r1/odom, /tf, /tf_static in; /r1/map, /r1/pose, map -> odom out
+//   drives     /r1/cmd_vel geometry_msgs/Twist (reliable, depth 10)
+//   team       /rK/map of every teammate in (transient local: a late joiner gets them);
+//              /team/map out: the merged map in the team frame, and teammates' /team/map in,
+//              which fills the cells no live teammate's map knows (a robot that rejoins gets the
+//              map of one that died); /team/claims tessera_msgs/FrontierClaim in and out;
+//              /team/status tessera_msgs/RobotStatus out (state, stop reason, pose, counters);
+//              /team/command tessera_msgs/TeamCommand in (start, stop, return home)
+// The team frame: each robot's map frame is its start pose in it (known start poses, given to
+// every robot). Messages that do not decode, a teammate's map of another resolution and claims
+// that are not finite are dropped and counted (stats, and RobotStatus::messages_dropped).
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessera/core/pose2.hpp"
+#include "tessera/core/result.hpp"
+#include "tessera/grid/occupancy_grid.hpp"
+#include "tessera/nav/path_follower.hpp"
+#include "tessera/net/transport.hpp"
+#include "tessera/nodes/slam_node.hpp"
+#include "tessera/team/frontier_route.hpp"
+
+namespace tessera::nodes {
+
+/// A robot of the team and where its map frame (its start pose) is in the team frame.
+struct TeamMember {
+  std::string name;  // "r1": namespace /r1
+  Pose2 T_team_map;
+};
+
+struct ExplorerNodeOptions {
+  std::string name = "r1";
+  /// Every robot of the team, this one included.
+  std::vector<TeamMember> team;
+  /// SLAM of this robot; its ns is set from `name`. Its map, which the robot plans on, comes at
+  /// least every half second of robot time.
+  SlamNodeOptions slam{.ns = "",
+                       .map_frame = "map",
+                       .map_period_wall_s = 1.0,
+                       .map_period_stamp_s = 0.5,
+                       .queue_depth = 2000,
+                       .slam = {}};
+  team::FrontierRouteOptions route;
+  PathFollowerOptions follower{.max_speed_m_per_s = 0.5,
+                               .max_turn_rate_rad_per_s = 1.5,
+                               .heading_gain_per_s = 2.0,
+                               .turn_in_place_rad = 0.6,
+                               .lookahead_m = 0.4,
+                               .goal_tolerance_m = 0.15,
+                               .slow_down_m = 0.3,
+                               .min_speed_fraction = 0.3};
+  /// The merged map and the route are checked this often (robot time).
+  double plan_period_s = 0.5;
+  /// /team/map is published this often (wall clock).
+  double team_map_period_wall_s = 2.0;
+  /// Robot time (odometry stamps) without 0.1 m of progress along the route before the target
+  /// is given up.
+  double stuck_s = 8.0;
+  /// Robot time with no reachable frontier before the robot reports it has finished.
+  double finish_after_s = 4.0;
+  /// Robot time between RobotStatus messages.
+  double status_period_s = 1.0;
+};
+
+/// Empty when usable; otherwise names the field and the rule it breaks.
+[[nodiscard]] std::optional<std::string> validate(const ExplorerNodeOptions& o);
+
+struct ExplorerNodeStats {
+  std::uint64_t teammate_maps_received = 0;
+  std::uint64_t teammate_maps_dropped = 0;  // did not decode, another resolution, bad size
+  std::uint64_t team_maps_received = 0;     // teammates' /team/map
+  std::uint64_t claims_received = 0;
+  std::uint64_t claims_dropped = 0;  // did not decode or not finite
+  std::uint64_t commands_received = 0;
+  std::uint64_t commands_dropped = 0;  // did not decode or an unknown command
+  std::uint64_t routes_planned = 0;
+  std::uint64_t targets_given_up = 0;  // stuck, or still a frontier once reached
+  std::uint64_t team_maps_published = 0;
+};
+
+class ExplorerNode {
+ public:
+  /// kUsage error for invalid options or a name missing from the team; the SLAM node's and the
+  /// transport's errors otherwise. `transport` must outlive the node.
+  [[nodiscard]] static Result<std::unique_ptr<ExplorerNode>> create(
+      const ExplorerNodeOptions& options, net::Transport& transport);
+  ~ExplorerNode();
+  ExplorerNode(const ExplorerNode&) = delete;
+  ExplorerNode& operator=(const ExplorerNode&) = delete;
+
+  /// Delivers what arrived, runs SLAM on it, re-plans when due and sends the velocity command
+  /// for the newest odometry. kRuntime error when SLAM or a publication fails.
+  [[nodiscard]] Status spin_once();
+  /// Stops the robot, releases its claim and says why in a last status ("shut down" unless it
+  /// had finished), then finishes the SLAM (SlamNode::finish).
+  [[nodiscard]] Result<slam::LaserSlamResult> finish();
+
+  /// A RobotStatusMessage state constant.
+  [[nodiscard]] std::uint8_t state() const;
+  /// Why the robot stopped exploring ("no reachable frontier", "stopped by command", "at home");
+  /// empty while it explores.
+  [[nodiscard]] const std::string& reason() const;
+  /// The team map the robot plans on (team frame); empty before its first map.
+  [[nodiscard]] const OccupancyGrid& team_map() const;
+  /// T_team_robot from SLAM and odometry; nullopt before the first scan is mapped.
+  [[nodiscard]] std::optional<Pose2> pose() const;
+  [[nodiscard]] const ExplorerNodeStats& stats() const;
+  [[nodiscard]] const SlamNodeStats& slam_stats() const;
+
+ private:
+  struct State;
+  explicit ExplorerNode(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace tessera::nodes

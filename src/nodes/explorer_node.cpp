@@ -1,0 +1,443 @@
+// The exploring robot of a team (nodes/explorer_node.hpp): SLAM, the team's map, frontier routes,
+// the path follower and the team's messages.
+#include "tessera/nodes/explorer_node.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "tessera/io/ros_message_encoders.hpp"
+#include "tessera/io/tf_tree.hpp"
+#include "tessera/net/ros_names.hpp"
+#include "tessera/record/ros_conversions.hpp"
+#include "tessera/team/map_merge.hpp"
+
+namespace tessera::nodes {
+namespace {
+
+using net::Qos;
+using net::Transport;
+using Status_ = RobotStatusMessage;
+using SteadyClock = std::chrono::steady_clock;
+
+constexpr double kProgressStep_m = 0.1;   // progress that resets the stuck timer
+constexpr double kTargetResolved_m = 0.2;  // a target with no frontier this close is explored
+constexpr double kPlanningMargin_m = 1.0;  // the planning grid reaches this far past the maps
+
+double seconds(std::int64_t ns) { return 1e-9 * static_cast<double>(ns); }
+
+// Claims and the team's status: every robot's latest, also for a robot that joins later.
+constexpr Qos kTeamQos{Qos::Reliability::kReliable, Qos::Durability::kTransientLocal, 1};
+// Readers of topics with one writer per robot keep one message per robot between polls.
+constexpr Qos kTeamReaderQos{Qos::Reliability::kReliable, Qos::Durability::kTransientLocal, 64};
+
+}  // namespace
+
+std::optional<std::string> validate(const ExplorerNodeOptions& o) {
+  if (!net::check_topic_name("/" + o.name).ok()) return "name must be a ROS 2 name, e.g. r1";
+  bool found = false;
+  for (const TeamMember& m : o.team) found = found || m.name == o.name;
+  if (!found) return "the team must include this robot (" + o.name + ")";
+  if (auto p = team::validate(o.route)) return "route: " + *p;
+  if (auto p = validate(o.follower)) return "follower: " + *p;
+  for (const double v : {o.plan_period_s, o.team_map_period_wall_s, o.stuck_s,
+                         o.finish_after_s, o.status_period_s}) {
+    if (!(v > 0.0) || !std::isfinite(v)) return "periods and times must be > 0";
+  }
+  return std::nullopt;
+}
+
+struct ExplorerNode::State {
+  struct Claim {
+    Vec2 target_m;
+    bool active = false;
+  };
+
+  ExplorerNodeOptions options;
+  Transport& transport;
+  std::unique_ptr<SlamNode> slam;
+  ExplorerNodeStats stats;
+  Pose2 T_team_map;  // this robot's map frame (its start) in the team frame
+  team::MapMerger direct;     // this robot's and its teammates' own maps
+  team::MapMerger team_maps;  // teammates' merged maps: cells no live map knows
+  std::map<std::string, Pose2> T_team_teammate;
+  std::map<std::string, Claim> claims;
+  std::uint64_t merged_inputs = 0, planned_inputs = ~0ULL, own_map_revision = 0;
+  OccupancyGrid team_map;
+  std::optional<team::DrivableMap> drivable;
+  Transport::WriterId cmd_writer = 0, claim_writer = 0, status_writer = 0, team_map_writer = 0;
+
+  std::uint8_t state = Status_::kStarting;
+  std::string reason;
+  std::optional<PathFollower> follower;
+  std::optional<Vec2> target_m;  // frontier target (exploring) or home (returning)
+  std::vector<Vec2> given_up_m;
+  std::uint32_t claim_id = 0;
+  std::int64_t last_odometry_ns = -1;
+  double now_s = 0.0;  // robot time: the newest odometry stamp
+  double progress_best_m = 0.0, progress_at_s = 0.0;
+  double no_frontier_since_s = -1.0;
+  double last_status_s = -1e9;
+  double last_plan_s = -1e9;
+  SteadyClock::time_point last_team_map{};
+
+  State(const ExplorerNodeOptions& o, Transport& t)
+      : options(o),
+        transport(t),
+        direct(o.slam.slam.map_resolution_m),
+        team_maps(o.slam.slam.map_resolution_m) {}
+
+  Status connect() {
+    for (const TeamMember& m : options.team) {
+      if (m.name == options.name) {
+        T_team_map = m.T_team_map;
+        continue;
+      }
+      T_team_teammate[m.name] = m.T_team_map;
+      Result<Transport::ReaderId> r =
+          transport.subscribe({"/" + m.name + "/map", std::string(kRos2OccupancyGrid), Qos::map()},
+                              [this, name = m.name](auto cdr) { on_teammate_map(name, cdr); });
+      if (!r.ok()) return r.error();
+    }
+    const std::string ns = "/" + options.name;
+    for (Status s :
+         {transport.advertise({ns + "/cmd_vel", std::string(kRos2Twist), Qos::reliable(10)},
+                              cmd_writer),
+          transport.advertise({"/team/claims", std::string(kRos2FrontierClaim), kTeamQos},
+                              claim_writer),
+          transport.advertise({"/team/status", std::string(kRos2RobotStatus), kTeamQos},
+                              status_writer),
+          transport.advertise({"/team/map", std::string(kRos2OccupancyGrid), Qos::map()},
+                              team_map_writer)}) {
+      if (!s.ok()) return s;
+    }
+    const auto sub = [&](const char* topic, std::string_view type, const Qos& qos,
+                         Transport::Handler h) -> Status {
+      Result<Transport::ReaderId> r = transport.subscribe({topic, std::string(type), qos}, h);
+      return r.ok() ? Status(Ok{}) : Status(r.error());
+    };
+    for (Status s :
+         {sub("/team/claims", kRos2FrontierClaim, kTeamReaderQos, [this](auto c) { on_claim(c); }),
+          sub("/team/map", kRos2OccupancyGrid, kTeamReaderQos, [this](auto c) { on_team_map(c); }),
+          sub("/team/command", kRos2TeamCommand, Qos::reliable(10),
+              [this](auto c) { on_command(c); })}) {
+      if (!s.ok()) return s;
+    }
+    return Ok{};
+  }
+
+  void on_teammate_map(const std::string& name, std::span<const std::uint8_t> cdr) {
+    Result<OccupancyGridMessage> m = decode_cdr_occupancy_grid(cdr);
+    if (!m.ok() || !direct.update(name, *m, T_team_teammate.at(name)).ok()) {
+      ++stats.teammate_maps_dropped;
+      return;
+    }
+    ++stats.teammate_maps_received;
+    ++merged_inputs;
+  }
+
+  void on_team_map(std::span<const std::uint8_t> cdr) {
+    Result<OccupancyGridMessage> m = decode_cdr_occupancy_grid(cdr);
+    // Frame "<robot>/team": whose merged map it is. This robot's own comes back too: skipped.
+    if (!m.ok()) {
+      ++stats.teammate_maps_dropped;
+      return;
+    }
+    const std::string robot(tf_frame_name(m->header.frame_id));
+    if (robot == options.name) return;
+    if (!team_maps.update(robot, *m, Pose2{}).ok()) {
+      ++stats.teammate_maps_dropped;
+      return;
+    }
+    ++stats.team_maps_received;
+    ++merged_inputs;
+  }
+
+  void on_claim(std::span<const std::uint8_t> cdr) {
+    Result<FrontierClaimMessage> m = decode_cdr_frontier_claim(cdr);
+    if (!m.ok() || !std::isfinite(m->target.x_m) || !std::isfinite(m->target.y_m)) {
+      ++stats.claims_dropped;
+      return;
+    }
+    if (m->robot_id == options.name) return;
+    ++stats.claims_received;
+    claims[m->robot_id] = {{m->target.x_m, m->target.y_m}, m->active};
+  }
+
+  void on_command(std::span<const std::uint8_t> cdr) {
+    Result<TeamCommandMessage> m = decode_cdr_team_command(cdr);
+    if (!m.ok() || m->command > TeamCommandMessage::kReturnHome) {
+      ++stats.commands_dropped;
+      return;
+    }
+    if (!m->robot_id.empty() && m->robot_id != options.name) return;
+    ++stats.commands_received;
+    drop_route();
+    no_frontier_since_s = -1.0;
+    if (m->command == TeamCommandMessage::kStart) {
+      set_state(Status_::kExploring, "");
+    } else if (m->command == TeamCommandMessage::kStop) {
+      set_state(Status_::kStopped, "stopped by command");
+    } else {
+      set_state(Status_::kReturningHome, "");
+    }
+    last_status_s = -1e9;  // say so at once
+  }
+
+  void set_state(std::uint8_t s, std::string why) {
+    state = s;
+    reason = std::move(why);
+  }
+
+  [[nodiscard]] std::optional<Pose2> pose() const {
+    const std::optional<PoseAtNs> odom = slam->latest_odometry();
+    if (!slam->started() || !odom) return std::nullopt;
+    return T_team_map * slam->T_map_odom() * odom->pose;
+  }
+
+  void drop_route() {
+    follower.reset();
+    target_m.reset();
+  }
+
+  void give_up_target() {
+    if (target_m && state == Status_::kExploring) {
+      given_up_m.push_back(*target_m);
+      ++stats.targets_given_up;
+    }
+    drop_route();
+  }
+
+  // The merged map and its drivable cells, when an input changed.
+  void merge() {
+    const OccupancyGrid* own = slam->map();
+    if (own == nullptr) return;
+    if (slam->map_revision() != own_map_revision) {
+      own_map_revision = slam->map_revision();
+      // The robot's own map cannot have another resolution: the merger was made with its own.
+      (void)direct.update(options.name, occupancy_grid_message(*own, 0, "map"), T_team_map);
+      ++merged_inputs;
+    }
+    if (merged_inputs == planned_inputs) return;
+    planned_inputs = merged_inputs;
+    GridGeometry g = direct.extent(kPlanningMargin_m);
+    const GridGeometry from_team = team_maps.extent();
+    if (from_team.size() > 0) {
+      // Both extents on one grid: the union, on the direct maps' cell boundaries.
+      const double r = g.resolution_m();
+      const double x0 = std::min(g.origin().x, from_team.origin().x - kPlanningMargin_m);
+      const double y0 = std::min(g.origin().y, from_team.origin().y - kPlanningMargin_m);
+      const double x1 = std::max(g.origin().x + g.width() * r,
+                                 from_team.origin().x + from_team.width() * r + kPlanningMargin_m);
+      const double y1 = std::max(g.origin().y + g.height() * r,
+                                 from_team.origin().y + from_team.height() * r + kPlanningMargin_m);
+      const Vec2 origin{g.origin().x - std::ceil((g.origin().x - x0) / r) * r,
+                        g.origin().y - std::ceil((g.origin().y - y0) / r) * r};
+      g = GridGeometry(origin, r, static_cast<int>(std::ceil((x1 - origin.x) / r)),
+                       static_cast<int>(std::ceil((y1 - origin.y) / r)));
+    }
+    team_map = direct.merged(g);
+    if (from_team.size() > 0) {
+      const OccupancyGrid fill = team_maps.merged(g);
+      for (std::size_t i = 0; i < g.size(); ++i) {
+        const Cell c = g.cell_of(i);
+        if (!team_map.known(c) && fill.known(c)) {
+          team_map.set_probability(c, probability(fill.log_odds_at(c)));
+        }
+      }
+    }
+    drivable = team::drivable_map(team_map, options.route);
+  }
+
+  std::vector<Vec2> teammate_claims() const {
+    std::vector<Vec2> out;
+    for (const auto& [robot, claim] : claims) {
+      if (claim.active) out.push_back(claim.target_m);
+    }
+    return out;
+  }
+
+  Status publish_claim(bool active, double length_m) {
+    FrontierClaimMessage m;
+    m.header = {static_cast<std::int64_t>(std::llround(now_s * 1e9)), "team"};
+    m.robot_id = options.name;
+    m.claim_id = ++claim_id;
+    if (target_m) m.target = {target_m->x, target_m->y, 0.0};
+    m.radius_m = static_cast<float>(options.route.claim_radius_m);
+    m.path_length_m = static_cast<float>(length_m);
+    m.active = active;
+    return transport.publish(claim_writer, encode_cdr(m));
+  }
+
+  void start_route(std::vector<Vec2> waypoints, Vec2 target) {
+    follower.emplace(std::move(waypoints), options.follower);
+    target_m = target;
+    progress_best_m = 0.0;
+    progress_at_s = now_s;
+    ++stats.routes_planned;
+  }
+
+  // Re-plans when the route is gone, done, blocked or its target explored.
+  Status plan(const Pose2& T_team_robot) {
+    if (!drivable) return Ok{};
+    const Vec2 robot{T_team_robot.x, T_team_robot.y};
+    if (state == Status_::kReturningHome) {
+      if (follower && follower->arrived()) {
+        drop_route();
+        set_state(Status_::kFinished, "at home");
+        return Ok{};
+      }
+      if (!follower || !team::route_still_drivable(*drivable, follower->waypoints(), 0)) {
+        drop_route();
+        const Vec2 home{T_team_map.x, T_team_map.y};
+        if (auto route = team::plan_drivable_route(*drivable, robot, home)) {
+          start_route(std::move(*route), home);
+        }
+      }
+      return Ok{};
+    }
+    const bool exploring = state == Status_::kStarting || state == Status_::kExploring ||
+                           (state == Status_::kFinished && reason == "no reachable frontier");
+    if (!exploring) return Ok{};
+    if (follower) {
+      const bool explored = !team::frontier_near(*drivable, *target_m, kTargetResolved_m);
+      if (follower->arrived() && !explored) {
+        give_up_target();
+      } else if (explored || !team::route_still_drivable(*drivable, follower->waypoints(), 0)) {
+        drop_route();
+      }
+    }
+    if (follower) return Ok{};
+    const std::vector<Vec2> others = teammate_claims();
+    std::optional<team::FrontierRoute> route =
+        team::plan_frontier_route(*drivable, robot, others, given_up_m, options.route);
+    if (!route) {
+      if (no_frontier_since_s < 0.0) no_frontier_since_s = now_s;
+      if (state != Status_::kFinished && now_s - no_frontier_since_s >= options.finish_after_s) {
+        set_state(Status_::kFinished, "no reachable frontier");
+        last_status_s = -1e9;
+        return publish_claim(false, 0.0);
+      }
+      return Ok{};
+    }
+    no_frontier_since_s = -1.0;
+    set_state(Status_::kExploring, "");
+    const double length = route->length_m;
+    start_route(std::move(route->waypoints_m), route->target_m);
+    return publish_claim(true, length);
+  }
+
+  Status drive(const Pose2& T_team_robot) {
+    TwistMessage cmd;
+    if (follower && (state == Status_::kExploring || state == Status_::kReturningHome)) {
+      const VelocityCommand v = follower->command(T_team_robot);
+      cmd.linear_x_mps = v.v_m_per_s;
+      cmd.angular_z_radps = v.omega_rad_per_s;
+      if (follower->progress_m() >= progress_best_m + kProgressStep_m) {
+        progress_best_m = follower->progress_m();
+        progress_at_s = now_s;
+      } else if (now_s - progress_at_s > options.stuck_s) {
+        give_up_target();
+      }
+    }
+    return transport.publish(cmd_writer, encode_cdr(cmd));
+  }
+
+  Status publish_status(const std::optional<Pose2>& T_team_robot) {
+    RobotStatusMessage m;
+    m.header = {static_cast<std::int64_t>(std::llround(now_s * 1e9)), "team"};
+    m.robot_id = options.name;
+    m.state = state;
+    m.reason = reason;
+    if (T_team_robot) m.pose = planar_transform(T_team_robot->x, T_team_robot->y, T_team_robot->theta);
+    if (const OccupancyGrid* own = slam->map()) {
+      const float free = log_odds(options.route.free_below);
+      std::size_t n = 0;
+      for (std::size_t i = 0; i < own->geometry().size(); ++i) {
+        n += own->is_free_below(own->geometry().cell_of(i), free) ? 1 : 0;
+      }
+      const double r = own->geometry().resolution_m();
+      m.explored_area_m2 = static_cast<float>(static_cast<double>(n) * r * r);
+    }
+    for (const auto& [topic, t] : transport.traffic()) {
+      m.messages_sent += t.messages_sent;
+      m.bytes_sent += t.bytes_sent;
+    }
+    const SlamNodeStats& s = slam->stats();
+    m.messages_dropped = stats.teammate_maps_dropped + stats.claims_dropped +
+                         stats.commands_dropped + s.scans_dropped_invalid +
+                         s.odometry_dropped_invalid;
+    last_status_s = now_s;
+    return transport.publish(status_writer, encode_cdr(m));
+  }
+
+  Status publish_team_map() {
+    last_team_map = SteadyClock::now();
+    if (team_map.geometry().size() == 0) return Ok{};
+    ++stats.team_maps_published;
+    return transport.publish(
+        team_map_writer,
+        encode_cdr(occupancy_grid_message(team_map, std::llround(now_s * 1e9),
+                                          options.name + "/team")));
+  }
+
+  Status spin() {
+    if (Result<int> added = slam->spin_once(); !added.ok()) return added.error();
+    const std::optional<PoseAtNs> odom = slam->latest_odometry();
+    if (odom) now_s = seconds(odom->t_ns);
+    const std::optional<Pose2> T_team_robot = pose();
+    const auto wall = SteadyClock::now();
+    if (T_team_robot && now_s - last_plan_s >= options.plan_period_s) {
+      last_plan_s = now_s;
+      merge();
+      if (Status s = plan(*T_team_robot); !s.ok()) return s;
+    }
+    if (wall - last_team_map >= std::chrono::duration<double>(options.team_map_period_wall_s)) {
+      if (Status s = publish_team_map(); !s.ok()) return s;
+    }
+    if (odom && odom->t_ns != last_odometry_ns && T_team_robot) {
+      last_odometry_ns = odom->t_ns;
+      if (Status s = drive(*T_team_robot); !s.ok()) return s;
+    }
+    if (now_s - last_status_s >= options.status_period_s) return publish_status(T_team_robot);
+    return Ok{};
+  }
+};
+
+ExplorerNode::ExplorerNode(std::unique_ptr<State> state) : state_(std::move(state)) {}
+ExplorerNode::~ExplorerNode() = default;
+
+Result<std::unique_ptr<ExplorerNode>> ExplorerNode::create(const ExplorerNodeOptions& options,
+                                                           Transport& transport) {
+  if (auto problem = validate(options)) return usage_error("explorer node: " + *problem);
+  ExplorerNodeOptions o = options;
+  o.slam.ns = "/" + o.name;
+  auto state = std::make_unique<State>(o, transport);
+  Result<std::unique_ptr<SlamNode>> slam = SlamNode::create(o.slam, transport);
+  if (!slam.ok()) return slam.error();
+  state->slam = std::move(*slam);
+  if (Status s = state->connect(); !s.ok()) return s.error();
+  return std::unique_ptr<ExplorerNode>(new ExplorerNode(std::move(state)));
+}
+
+Status ExplorerNode::spin_once() { return state_->spin(); }
+
+Result<slam::LaserSlamResult> ExplorerNode::finish() {
+  State& s = *state_;
+  s.drop_route();
+  if (s.state != Status_::kFinished) s.set_state(Status_::kStopped, "shut down");
+  for (Status st : {s.transport.publish(s.cmd_writer, encode_cdr(TwistMessage{})),
+                    s.publish_claim(false, 0.0), s.publish_status(s.pose())}) {
+    if (!st.ok()) return st.error();
+  }
+  return s.slam->finish();
+}
+
+std::uint8_t ExplorerNode::state() const { return state_->state; }
+const std::string& ExplorerNode::reason() const { return state_->reason; }
+const OccupancyGrid& ExplorerNode::team_map() const { return state_->team_map; }
+std::optional<Pose2> ExplorerNode::pose() const { return state_->pose(); }
+const ExplorerNodeStats& ExplorerNode::stats() const { return state_->stats; }
+const SlamNodeStats& ExplorerNode::slam_stats() const { return state_->slam->stats(); }
+
+}  // namespace tessera::nodes

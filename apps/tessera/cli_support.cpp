@@ -7,6 +7,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cmath>
 #include <sstream>
 
 #include "tessera/io/map_file.hpp"
@@ -173,6 +174,17 @@ Result<Vec2> parse_point(const std::string& text, const std::string& option) {
     return usage_error(fmt::format("{} expects X,Y in metres, got '{}'", option, text));
   }
   return p;
+}
+
+Result<Pose2> parse_pose(const std::string& text, const std::string& option) {
+  double x = 0.0, y = 0.0, theta = 0.0;
+  char extra = 0;
+  const int n = std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &theta, &extra);
+  if ((n != 2 && n != 3) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(theta)) {
+    return usage_error(fmt::format(
+        "{}: expected X,Y or X,Y,THETA in metres and radians, got '{}'", option, text));
+  }
+  return Pose2{x, y, theta};
 }
 
 }  // namespace tessera::cli

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "tessera/core/pose2.hpp"
 #include "tessera/core/result.hpp"
 #include "tessera/sim/world.hpp"
 
@@ -82,5 +83,7 @@ void add_world_options(CLI::App& command, WorldSource& source);
 
 /// "3.5,2" -> {3.5, 2}; usage error otherwise.
 [[nodiscard]] Result<Vec2> parse_point(const std::string& text, const std::string& option);
+/// "X,Y" or "X,Y,THETA" (metres, radians) -> a pose; usage error naming the option otherwise.
+[[nodiscard]] Result<Pose2> parse_pose(const std::string& text, const std::string& option);
 
 }  // namespace tessera::cli

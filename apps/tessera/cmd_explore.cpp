@@ -58,10 +58,12 @@ ExploreCommand::ExploreCommand(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   add_output_stream_options(*sub_, streams_);
+  add_ros_options();
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
 }
 
 int ExploreCommand::run() const {
+  if (ros_) return run_ros();
   Result<World> loaded = load_world(world_, resolution_m_ > 0.0 ? resolution_m_ : 0.1);
   if (!loaded) return report_error(loaded.error());
   World world = std::move(loaded).value();

@@ -14,18 +14,6 @@
 namespace tessera::cli {
 namespace {
 
-// "X,Y" or "X,Y,THETA" (metres, radians); usage error otherwise.
-Result<Pose2> parse_start(const std::string& text) {
-  double x = 0.0, y = 0.0, theta = 0.0;
-  char extra = 0;
-  const int n = std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &x, &y, &theta, &extra);
-  if ((n != 2 && n != 3) || !std::isfinite(x) || !std::isfinite(y) || !std::isfinite(theta)) {
-    return usage_error("--start: expected X,Y or X,Y,THETA in metres and radians, got '" + text +
-                       "'");
-  }
-  return Pose2{x, y, theta};
-}
-
 // One random start per robot with room around it, at least a metre from the others.
 Result<std::vector<Pose2>> random_starts(const World& world, int robots, double clearance_m,
                                          std::uint64_t seed) {
@@ -85,7 +73,7 @@ int SimCommand::run() const {
                                       " times for " + std::to_string(robots_) + " robots"));
     }
     for (const std::string& text : starts_) {
-      Result<Pose2> start = parse_start(text);
+      Result<Pose2> start = parse_pose(text, "--start");
       if (!start.ok()) return report_error(start.error());
       options.starts.push_back(*start);
     }

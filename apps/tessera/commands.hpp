@@ -51,6 +51,15 @@ class ExploreCommand : public Command {
   std::int64_t max_steps_ = kDefaults.max_steps;
   OutputStreams streams_;  // --record, --serve
   bool quiet_ = false;
+  // --ros: one explorer robot of a team on Cyclone DDS (cmd_explore_ros.cpp).
+  void add_ros_options();
+  [[nodiscard]] int run_ros() const;
+  bool ros_ = false;
+  std::string ns_ = "r1";
+  std::vector<std::string> team_starts_;  // "X,Y[,THETA]" per robot, r1 first
+  bool exit_when_finished_ = false;
+  std::uint32_t domain_ = 0;
+  bool network_ = false;
 };
 
 /// tessera render: draws a map file (and optionally trajectories and ground-truth errors) as PNG.
@@ -258,6 +267,30 @@ class SimCommand : public Command {
   double duration_s_ = 0.0;  // simulated; 0: until Ctrl-C or SIGTERM
   std::uint32_t domain_ = 0;
   bool network_ = false;  // all interfaces and multicast discovery instead of loopback only
+  bool quiet_ = false;
+};
+
+/// tessera team: a team of explorer robots and the simulator as separate processes over DDS
+/// (cmd_team.cpp).
+class TeamCommand : public Command {
+ public:
+  explicit TeamCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  WorldSource world_;
+  double resolution_m_ = 0.05;
+  int robots_ = 3;
+  std::uint64_t seed_ = 1;
+  double rate_ = 2.0;
+  double max_s_ = 1800.0;
+  std::optional<int> kill_robot_;  // 1-based
+  std::optional<double> kill_at_coverage_;
+  std::optional<double> kill_at_s_;
+  std::optional<double> restart_after_s_;
+  std::filesystem::path out_ = "out/team";
+  std::uint32_t domain_ = 0;
+  bool network_ = false;
   bool quiet_ = false;
 };
 

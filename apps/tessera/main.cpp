@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   FusionCommand fusion(app);
   SimCommand sim(app);
   PlayCommand play(app);
+  TeamCommand team(app);
   add_config_options(app);
 
   try {
@@ -46,5 +47,6 @@ int main(int argc, char** argv) {
   if (fusion.parsed()) return fusion.run();
   if (sim.parsed()) return sim.run();
   if (play.parsed()) return play.run();
+  if (team.parsed()) return team.run();
   return kExitUsage;
 }

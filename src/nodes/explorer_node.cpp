@@ -52,6 +52,11 @@ struct ExplorerNode::State {
     Vec2 target_m;
     bool active = false;
   };
+  struct Teammate {
+    Vec2 position_m;
+    double stamp_s = 0.0;
+    bool exploring = false;
+  };
 
   ExplorerNodeOptions options;
   Transport& transport;
@@ -62,6 +67,7 @@ struct ExplorerNode::State {
   team::MapMerger team_maps;  // teammates' merged maps: cells no live map knows
   std::map<std::string, Pose2> T_team_teammate;
   std::map<std::string, Claim> claims;
+  std::map<std::string, Teammate> teammates;
   std::uint64_t merged_inputs = 0, planned_inputs = ~0ULL, own_map_revision = 0;
   OccupancyGrid team_map;
   std::optional<team::DrivableMap> drivable;
@@ -119,6 +125,7 @@ struct ExplorerNode::State {
     for (Status s :
          {sub("/team/claims", kRos2FrontierClaim, kTeamReaderQos, [this](auto c) { on_claim(c); }),
           sub("/team/map", kRos2OccupancyGrid, kTeamReaderQos, [this](auto c) { on_team_map(c); }),
+          sub("/team/status", kRos2RobotStatus, kTeamReaderQos, [this](auto c) { on_status(c); }),
           sub("/team/command", kRos2TeamCommand, Qos::reliable(10),
               [this](auto c) { on_command(c); })}) {
       if (!s.ok()) return s;
@@ -162,6 +169,15 @@ struct ExplorerNode::State {
     if (m->robot_id == options.name) return;
     ++stats.claims_received;
     claims[m->robot_id] = {{m->target.x_m, m->target.y_m}, m->active};
+  }
+
+  void on_status(std::span<const std::uint8_t> cdr) {
+    Result<RobotStatusMessage> m = decode_cdr_robot_status(cdr);
+    if (!m.ok() || m->robot_id == options.name || !T_team_teammate.contains(m->robot_id)) return;
+    const Pose2 p = planar_pose(m->pose);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+    teammates[m->robot_id] = {{p.x, p.y}, seconds(m->header.stamp_ns),
+                              m->state == Status_::kExploring || m->state == Status_::kStarting};
   }
 
   void on_command(std::span<const std::uint8_t> cdr) {
@@ -249,6 +265,17 @@ struct ExplorerNode::State {
     drivable = team::drivable_map(team_map, options.route);
   }
 
+  // Teammates that are exploring and were heard from lately: a robot that died or has finished
+  // no longer holds a share of the frontier.
+  std::vector<Vec2> active_teammates() const {
+    constexpr double kSilent_s = 5.0;
+    std::vector<Vec2> out;
+    for (const auto& [robot, t] : teammates) {
+      if (t.exploring && now_s - t.stamp_s <= kSilent_s) out.push_back(t.position_m);
+    }
+    return out;
+  }
+
   std::vector<Vec2> teammate_claims() const {
     std::vector<Vec2> out;
     for (const auto& [robot, claim] : claims) {
@@ -309,8 +336,8 @@ struct ExplorerNode::State {
     }
     if (follower) return Ok{};
     const std::vector<Vec2> others = teammate_claims();
-    std::optional<team::FrontierRoute> route =
-        team::plan_frontier_route(*drivable, robot, others, given_up_m, options.route);
+    std::optional<team::FrontierRoute> route = team::plan_frontier_route(
+        *drivable, robot, active_teammates(), others, given_up_m, options.route);
     if (!route) {
       if (no_frontier_since_s < 0.0) no_frontier_since_s = now_s;
       if (state != Status_::kFinished && now_s - no_frontier_since_s >= options.finish_after_s) {

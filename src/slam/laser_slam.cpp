@@ -178,6 +178,11 @@ struct LaserSlam::Impl {
   double last_t_s = 0.0;
   int nodes_since_optimization = 0;
   int loop_constraints_since_optimization = 0;
+  std::uint64_t poses_version = 0;  // counts optimisations: node poses change only there
+  // build_map()'s grid of nodes [0, map_cache_nodes) at the poses of map_cache_version.
+  mutable ProbabilityGrid map_cache;
+  mutable std::size_t map_cache_nodes = 0;
+  mutable std::uint64_t map_cache_version = 0;
   double travel_m = 0.0;          // local SLAM's path length over the nodes so far
   /// Submaps joined by the path (consecutive ones, weighted by the travel between their first
   /// nodes) and by accepted loop closures (weighted by the travel from the node to its submap):
@@ -425,6 +430,7 @@ struct LaserSlam::Impl {
     posegraph::OptimizeOptions o;
     o.max_iterations = options.optimizer_iterations;
     o.huber_scale = options.huber_scale;
+    ++poses_version;  // every node may move: the map cache starts again
     Result<posegraph::OptimizeSummary> summary = posegraph::optimize(graph, o);
     if (summary && last && switch_off_outliers() > 0) summary = posegraph::optimize(graph, o);
     stats.optimization_s += seconds_since(t0);
@@ -552,11 +558,21 @@ struct LaserSlam::Impl {
     options.progress(p);
   }
 
-  // Every node's points inserted at its current global pose.
+  // Every node's points inserted at its current global pose, in node order. A node's global pose
+  // changes only in an optimisation, so between two the map only grows by the nodes added since
+  // the last call: those are inserted into a kept grid, which gives the very map a full rebuild
+  // gives (the same insertions in the same order) at the cost of the new nodes only. A live
+  // robot asks for its map every half second; a rebuild each time cost it most of a core.
   OccupancyGrid build_map() const {
+    if (map_cache_version != poses_version) {
+      map_cache = ProbabilityGrid{};
+      map_cache_nodes = 0;
+      map_cache_version = poses_version;
+    }
     RangeInserter inserter(options.map_insert);
-    ProbabilityGrid map;
-    for (const Node& node : nodes) {
+    ProbabilityGrid& map = map_cache;
+    for (; map_cache_nodes < nodes.size(); ++map_cache_nodes) {
+      const Node& node = nodes[map_cache_nodes];
       const Pose2& T = global_pose(node.vertex);
       if (map.geometry().width() == 0) {
         const double res = options.map_resolution_m;

@@ -128,6 +128,7 @@ DrivableMap drivable_map(const OccupancyGrid& map, const FrontierRouteOptions& o
 }
 
 std::optional<FrontierRoute> plan_frontier_route(const DrivableMap& map, Vec2 robot_m,
+                                                 std::span<const Vec2> teammates_m,
                                                  std::span<const Vec2> teammate_claims_m,
                                                  std::span<const Vec2> given_up_m,
                                                  const FrontierRouteOptions& o,
@@ -137,17 +138,25 @@ std::optional<FrontierRoute> plan_frontier_route(const DrivableMap& map, Vec2 ro
   if (!start) return std::nullopt;
   const GridGeometry& g = map.geometry;
   MaskDijkstra search(g, map.drivable);
-  for (const bool allow_claimed : {false, true}) {
+  // Pass 0: this robot's share away from claims; 1: anywhere away from claims; 2: anywhere.
+  for (int pass = 0; pass < 3; ++pass) {
+    if (pass > 0 && teammates_m.empty() && teammate_claims_m.empty()) break;
     const std::optional<Cell> goal = search.search(*start, [&](Cell c) {
       if (map.frontier[g.index_of(c)] == 0) return false;
       const Vec2 p = g.center_of(c);
       if (near_any(p, given_up_m, o.give_up_radius_m)) return false;
-      return allow_claimed || !near_any(p, teammate_claims_m, o.claim_radius_m);
+      if (pass < 2 && near_any(p, teammate_claims_m, o.claim_radius_m)) return false;
+      if (pass == 0) {
+        const Vec2 d = p - robot_m;
+        const double mine2 = d.x * d.x + d.y * d.y;
+        for (const Vec2 t : teammates_m) {
+          const Vec2 e = p - t;
+          if (e.x * e.x + e.y * e.y < mine2) return false;
+        }
+      }
+      return true;
     });
-    if (!goal) {
-      if (teammate_claims_m.empty()) return std::nullopt;
-      continue;
-    }
+    if (!goal) continue;
     FrontierRoute route;
     route.target_m = g.center_of(*goal);
     route.waypoints_m = route_points(map, search, robot_m, *goal, route.target_m);

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "tessera/io/tf_tree.hpp"
 
@@ -76,30 +78,54 @@ OccupancyGrid MapMerger::merged() const {
 }
 
 OccupancyGrid MapMerger::merged(const GridGeometry& g) const {
-  OccupancyGrid out(g);
-  const int width = g.width(), height = g.height();
+  // Each robot map's grid seen from the team frame: T_origin_team takes a team point into it.
+  struct View {
+    const OccupancyGridMessage* map;
+    Pose2 T_origin_team;
+    double cos_theta, sin_theta;  // of T_origin_team, once per map rather than per point
+  };
+  std::vector<View> views;
   for (const auto& [robot, m] : maps_) {
-    // The team cell centre in the robot map's grid: T_origin_team.
-    const Pose2 T_origin_team = (m.T_team_map * planar_pose(m.map.origin)).inverse();
-    const double r = m.map.resolution_m;
-    for (int y = 0; y < height; ++y) {
-      for (int x = 0; x < width; ++x) {
-        const Vec2 p = T_origin_team * g.center_of({x, y});
-        const long cx = std::lround(std::floor(p.x / r));
-        const long cy = std::lround(std::floor(p.y / r));
-        if (cx < 0 || cy < 0 || cx >= m.map.width || cy >= m.map.height) continue;
-        const std::int8_t v =
-            m.map.data[static_cast<std::size_t>(cy) * m.map.width + static_cast<std::size_t>(cx)];
-        if (v < 0 || v > 100) continue;  // unknown (-1), or not a probability
-        // 0 and 100 percent are a robot's certainty, kept finite: 0.5 % and 99.5 %.
-        const double p_occ = std::clamp(v / 100.0, 0.005, 0.995);
-        const Cell c{x, y};
-        if (out.known(c)) {
-          out.add_log_odds(c, log_odds(p_occ), -std::numeric_limits<float>::max(),
-                           std::numeric_limits<float>::max());
-        } else {
-          out.set_probability(c, p_occ);
+    const Pose2 T = (m.T_team_map * planar_pose(m.map.origin)).inverse();
+    views.push_back({&m.map, T, std::cos(T.theta), std::sin(T.theta)});
+  }
+  // The robots' summed log-odds at a team point; nullopt where none knows it.
+  const auto at = [&](Vec2 p_team) -> std::optional<float> {
+    std::optional<float> sum;
+    for (const View& v : views) {
+      const Vec2 p{v.T_origin_team.x + v.cos_theta * p_team.x - v.sin_theta * p_team.y,
+                   v.T_origin_team.y + v.sin_theta * p_team.x + v.cos_theta * p_team.y};
+      const double r = v.map->resolution_m;
+      const long cx = std::lround(std::floor(p.x / r));
+      const long cy = std::lround(std::floor(p.y / r));
+      if (cx < 0 || cy < 0 || cx >= v.map->width || cy >= v.map->height) continue;
+      const std::int8_t value =
+          v.map->data[static_cast<std::size_t>(cy) * v.map->width + static_cast<std::size_t>(cx)];
+      if (value < 0 || value > 100) continue;  // unknown (-1), or not a probability
+      // 0 and 100 percent are a robot's certainty, kept finite: 0.5 % and 99.5 %.
+      sum = sum.value_or(0.0f) + log_odds(std::clamp(value / 100.0, 0.005, 0.995));
+    }
+    return sum;
+  };
+  // A cell coarser than the team's takes n x n points spread over it, n the ratio of the cell
+  // sizes, and the most occupied of those known: one point per team cell when the grids align,
+  // never a point on a cell border, and an obstacle in any part of the cell keeps it occupied
+  // (as World::resampled keeps thin walls).
+  const int n = std::max(1, static_cast<int>(std::lround(g.resolution_m() / resolution_m_)));
+  OccupancyGrid out(g);
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      std::optional<float> cell;
+      for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+          const Vec2 p{g.origin().x + (x + (i + 0.5) / n) * g.resolution_m(),
+                       g.origin().y + (y + (j + 0.5) / n) * g.resolution_m()};
+          if (const std::optional<float> v = at(p)) cell = std::max(cell.value_or(*v), *v);
         }
+      }
+      if (cell) {
+        out.add_log_odds({x, y}, *cell, -std::numeric_limits<float>::max(),
+                         std::numeric_limits<float>::max());
       }
     }
   }

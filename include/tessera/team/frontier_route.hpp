@@ -10,9 +10,12 @@
 //    such holes in open space, which the next pass fills; chasing them is wasted driving.
 //  - Nearest: by path length over drivable cells, 8-connected (nav/route_planner.hpp's Dijkstra),
 //    the route string-pulled to straight legs that stay drivable.
-//  - Shared (the lecture: each robot explores the part of the frontier nearest to it): frontier
-//    cells near a teammate's claimed target are taken only when nothing else is reachable, so
-//    robots spread out; cells near a target this robot gave up on are never taken.
+//  - Shared (the lecture: "each robot explores the portion of the frontier closest to its
+//    position"): a robot first looks for frontier cells nearer to it than to every teammate (a
+//    Voronoi partition of the frontier by straight-line distance) and away from teammates'
+//    claimed targets; then for any frontier cell away from the claims; then for any. So robots
+//    spread out, and none waits while frontier is left. Cells near a target this robot gave up on
+//    are never taken.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -58,15 +61,16 @@ struct FrontierRoute {
   double length_m = 0.0;
 };
 
-/// The nearest eligible frontier cell from robot_m and the route there (see the file comment).
+/// The nearest eligible frontier cell from robot_m and the route there (see the file comment);
+/// teammates_m are the teammates' positions.
 /// A robot outside the drivable cells (pushed against a wall, or a map that has just grown an
 /// obstacle beside it) starts from the nearest drivable cell within entry_radius_m, straight.
 /// nullopt when no eligible frontier cell is reachable. Cost: one Dijkstra search over the
-/// drivable cells nearer than the target (two when only claimed cells remain).
+/// drivable cells nearer than the target (up to three when the robot's own share is explored).
 [[nodiscard]] std::optional<FrontierRoute> plan_frontier_route(
-    const DrivableMap& map, Vec2 robot_m, std::span<const Vec2> teammate_claims_m,
-    std::span<const Vec2> given_up_m, const FrontierRouteOptions& o,
-    double entry_radius_m = 0.5);
+    const DrivableMap& map, Vec2 robot_m, std::span<const Vec2> teammates_m,
+    std::span<const Vec2> teammate_claims_m, std::span<const Vec2> given_up_m,
+    const FrontierRouteOptions& o, double entry_radius_m = 0.5);
 
 /// A drivable route from robot_m to the drivable cell nearest goal_m within entry_radius_m (the
 /// way home); nullopt when there is none.

@@ -1,0 +1,85 @@
+// tessera team: the simulator and the robots as separate processes over DDS. A team explores the
+// office by its own SLAM; a robot killed at 30 % coverage does not stop the others, and started
+// again it rejoins and receives the team's map. Bad options are usage errors.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_run.hpp"
+#include "support/dds_isolation.hpp"
+#include "support/temp_dir.hpp"
+
+namespace tessera {
+namespace {
+
+using ::testing::HasSubstr;
+
+nlohmann::json read_json(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+std::string team_args(const support::TempDir& dir) {
+  return "team --builtin office --rate 2 --max-s 600 --quiet --domain " +
+         std::to_string(support::test_dds_domain()) + " --out " + dir.path().string();
+}
+
+TEST(CliTeam, TwoRobotProcessesExploreTheOfficeAndStopByThemselves) {
+  const support::TempDir dir;
+  const support::CliRun run = support::run_cli(team_args(dir) + " --robots 2");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json report = read_json(dir.path() / "report.json");
+  const nlohmann::json& team = report["team"];
+  EXPECT_EQ(team["end"], "every robot finished");
+  EXPECT_GE(team["coverage"].get<double>(), 0.99);
+  EXPECT_LT(report["map_accuracy"]["occupied_as_empty_share"].get<double>(), 0.005);
+  ASSERT_EQ(team["robots"].size(), 2u);
+  for (const nlohmann::json& r : team["robots"]) {
+    EXPECT_EQ(r["reason"], "no reachable frontier") << r.dump();
+    EXPECT_GT(r["bytes_sent"].get<std::uint64_t>(), 0u);
+    // Localised by its own SLAM: within 10 cm of the truth all along.
+    EXPECT_LT(r["slam_position_error"]["max_m"].get<double>(), 0.10) << r.dump();
+  }
+  for (const char* f : {"map.png", "map.yaml", "map.pgm", "r1_truth.txt", "r2_slam.txt"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir.path() / f)) << f;
+  }
+  EXPECT_EQ(read_json(dir.path() / "r1" / "report.json")["command"], "explore");
+}
+
+TEST(CliTeam, AKilledRobotDoesNotStopTheOthersAndRejoinsWithTheTeamsMap) {
+  const support::TempDir dir;
+  const support::CliRun run = support::run_cli(
+      team_args(dir) + " --robots 3 --kill-robot 2 --at-coverage 0.3 --restart-after-s 5");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json report = read_json(dir.path() / "report.json");
+  const nlohmann::json& team = report["team"];
+  EXPECT_EQ(team["end"], "every robot finished");
+  EXPECT_GE(team["coverage"].get<double>(), 0.99);
+  const nlohmann::json& r2 = team["robots"][1];
+  ASSERT_FALSE(r2["killed_at_s"].is_null());
+  ASSERT_FALSE(r2["restarted_at_s"].is_null());
+  EXPECT_GE(r2["restarted_at_s"].get<double>(), r2["killed_at_s"].get<double>() + 5.0);
+  for (const int i : {0, 2}) {
+    EXPECT_EQ(team["robots"][i]["reason"], "no reachable frontier") << team["robots"][i].dump();
+  }
+  // The restarted r2 received its teammates' maps and their merged maps (transient local).
+  const nlohmann::json explorer = read_json(dir.path() / "r2" / "report.json")["explorer"];
+  EXPECT_GE(explorer["teammate_maps_received"].get<int>(), 2) << explorer.dump();
+  EXPECT_GE(explorer["team_maps_received"].get<int>(), 1) << explorer.dump();
+}
+
+TEST(CliTeam, BadOptionsAreUsageErrors) {
+  const support::TempDir dir;
+  support::CliRun run = support::run_cli(team_args(dir) + " --kill-robot 2");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.output, HasSubstr("--kill-robot needs --at-coverage or --at-s"));
+  run = support::run_cli(team_args(dir) + " --robots 2 --kill-robot 3 --at-s 1");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_THAT(run.output, HasSubstr("there is no robot 3"));
+}
+
+}  // namespace
+}  // namespace tessera

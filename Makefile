@@ -59,6 +59,12 @@ bench: build
 slam-table: cli
 	python3 scripts/slam_log_table.py --images docs/images
 
+# Issue 14's throughput benchmark: tessera team with 1, 3 and 8 robot processes over DDS; prints
+# map and claim traffic per robot and the scan-to-map latency (docs/ros2.md).
+.PHONY: team-bench
+team-bench: cli
+	python3 scripts/team_bench.py
+
 clean:
 	rm -rf build out
 

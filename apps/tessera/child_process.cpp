@@ -83,8 +83,7 @@ void ChildProcess::kill() {
 std::optional<int> ChildProcess::stop(double grace_s) {
   if (!running()) return exit_code_;
   ::kill(pid_, SIGTERM);
-  const auto deadline =
-      std::chrono::steady_clock::now() + std::chrono::duration<double>(grace_s);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(grace_s);
   while (running()) {
     if (std::chrono::steady_clock::now() > deadline) {
       ::kill(pid_, SIGKILL);

@@ -5,6 +5,7 @@
 // with its message counts and why it stopped.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <nlohmann/json.hpp>
 
@@ -21,13 +22,20 @@ namespace {
 
 const char* state_name(std::uint8_t s) {
   switch (s) {
-    case RobotStatusMessage::kStarting: return "starting";
-    case RobotStatusMessage::kExploring: return "exploring";
-    case RobotStatusMessage::kReturningHome: return "returning home";
-    case RobotStatusMessage::kIdle: return "idle";
-    case RobotStatusMessage::kFinished: return "finished";
-    case RobotStatusMessage::kStopped: return "stopped";
-    default: return "failed";
+    case RobotStatusMessage::kStarting:
+      return "starting";
+    case RobotStatusMessage::kExploring:
+      return "exploring";
+    case RobotStatusMessage::kReturningHome:
+      return "returning home";
+    case RobotStatusMessage::kIdle:
+      return "idle";
+    case RobotStatusMessage::kFinished:
+      return "finished";
+    case RobotStatusMessage::kStopped:
+      return "stopped";
+    default:
+      return "failed";
   }
 }
 
@@ -51,6 +59,31 @@ nlohmann::json explorer_json(const nodes::ExplorerNode& node) {
           {"scans_dropped_invalid", slam.scans_dropped_invalid},
           {"readings_dropped_invalid", slam.readings_dropped_invalid},
           {"odometry_dropped_invalid", slam.odometry_dropped_invalid}};
+}
+
+// Messages and bytes per topic through this robot's participant.
+nlohmann::json traffic_json(const net::Transport& transport) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [topic, t] : transport.traffic()) {
+    out[topic] = {{"messages_sent", t.messages_sent},
+                  {"bytes_sent", t.bytes_sent},
+                  {"messages_received", t.messages_received},
+                  {"bytes_received", t.bytes_received}};
+  }
+  return out;
+}
+
+// Wall seconds from a scan's receipt to the first map that holds it.
+nlohmann::json latency_json(std::vector<double> latencies_s) {
+  if (latencies_s.empty()) return nullptr;
+  std::sort(latencies_s.begin(), latencies_s.end());
+  const auto at = [&](double q) {
+    return latencies_s[static_cast<std::size_t>(q * static_cast<double>(latencies_s.size() - 1))];
+  };
+  return {{"scans", latencies_s.size()},
+          {"median_s", at(0.5)},
+          {"p99_s", at(0.99)},
+          {"max_s", latencies_s.back()}};
 }
 
 }  // namespace
@@ -106,7 +139,9 @@ int ExploreCommand::run_ros() const {
   const slam::LaserSlamResult& r = *result;
   nlohmann::json report = {{"options", slam_options_json(options.slam.slam, "ros", ns_)},
                            {"slam", slam_stats_json(r, LaserLog{})},
-                           {"explorer", explorer_json(**node)}};
+                           {"explorer", explorer_json(**node)},
+                           {"traffic", traffic_json(**transport)},
+                           {"map_latency", latency_json((*node)->map_latencies_s())}};
   report["options"]["team_start"] = team_starts_;
   const double duration_s =
       r.trajectory.empty() ? 0.0 : r.trajectory.back().t_s - r.trajectory.front().t_s;

@@ -6,23 +6,20 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include "child_process.hpp"
 #include "commands.hpp"
 #include "dds_options.hpp"
+#include "team_processes.hpp"
 #include "team_report.hpp"
+#include "tessera/nodes/explorer_node.hpp"
 #include "tessera/nodes/sim_node.hpp"
 #include "tessera/report/core_report.hpp"
 #include "tessera/sim/team_starts.hpp"
 
 namespace tessera::cli {
-namespace {
-
-std::string pose_text(const Pose2& p) { return fmt::format("{:.4f},{:.4f},{:.4f}", p.x, p.y, p.theta); }
-
-}  // namespace
-
 TeamCommand::TeamCommand(CLI::App& app) {
   sub_ = app.add_subcommand(
       "team",
@@ -61,54 +58,36 @@ int TeamCommand::run() const {
     return report_error(usage_error("--kill-robot needs --at-coverage or --at-s"));
   }
   if (kill_robot_ && *kill_robot_ > robots_) {
-    return report_error(usage_error("--kill-robot: there is no robot " +
-                                    std::to_string(*kill_robot_)));
+    return report_error(
+        usage_error("--kill-robot: there is no robot " + std::to_string(*kill_robot_)));
   }
   Result<World> world = load_world(world_, resolution_m_);
   if (!world.ok()) return report_error(world.error());
   const nodes::SimNodeOptions sim_defaults;
+  const nodes::ExplorerNodeOptions robot_defaults;
+  const double map_cell_m = robot_defaults.slam.slam.map_resolution_m;
   Result<std::vector<Pose2>> starts =
-      team_starts(*world, robots_, 2.0 * sim_defaults.robot_radius_m, 0.6);
+      team_starts(*world, robots_, 2.0 * sim_defaults.robot_radius_m, 0.6, map_cell_m);
   if (!starts.ok()) return report_error(starts.error());
   std::error_code ec;
   std::filesystem::create_directories(out_ / "logs", ec);
   if (ec) return report_error(runtime_error("cannot create " + (out_ / "logs").string()));
 
   std::vector<nodes::TeamMember> team;
-  std::vector<std::string> sim_args{"sim", "--robots", std::to_string(robots_), "--seed",
-                                    std::to_string(seed_), "--rate", fmt::format("{}", rate_),
-                                    "--resolution-m", fmt::format("{}", resolution_m_), "--quiet"};
-  std::vector<std::string> robot_args{"explore", "--ros", "--quiet"};
   for (int i = 0; i < robots_; ++i) {
-    const Pose2& s = (*starts)[static_cast<std::size_t>(i)];
-    team.push_back({nodes::robot_name(i), s});
-    sim_args.insert(sim_args.end(), {"--start", pose_text(s)});
-    robot_args.insert(robot_args.end(), {"--team-start", pose_text(s)});
+    team.push_back({nodes::robot_name(i), (*starts)[static_cast<std::size_t>(i)]});
   }
-  for (std::vector<std::string>* args : {&sim_args, &robot_args}) {
-    args->insert(args->end(), {"--domain", std::to_string(domain_)});
-    if (network_) args->push_back("--network");
-  }
-  if (world_.file) {
-    sim_args.insert(sim_args.end(), {"--world", world_.file->string()});
-  } else {
-    sim_args.insert(sim_args.end(), {"--builtin", world_.builtin});
-  }
-  if (world_.map_resolution_m) {
-    sim_args.insert(sim_args.end(), {"--map-resolution-m", fmt::format("{}", *world_.map_resolution_m)});
-  }
-  if (world_.crop) sim_args.insert(sim_args.end(), {"--crop", *world_.crop});
+  const TeamLaunch launch =
+      team_launch({world_, resolution_m_, seed_, rate_, domain_, network_}, *starts);
 
   Result<std::unique_ptr<net::Transport>> transport = open_dds(domain_, network_);
   if (!transport.ok()) return report_error(transport.error());
   Result<std::unique_ptr<nodes::TeamObserver>> observer =
-      nodes::TeamObserver::create(team, 0.05, **transport);
+      nodes::TeamObserver::create(team, map_cell_m, **transport);
   if (!observer.ok()) return report_error(observer.error());
   const auto start_robot = [&](int i) -> Result<ChildProcess> {
-    std::vector<std::string> args = robot_args;
     const std::string name = nodes::robot_name(i);
-    args.insert(args.end(), {"--ns", name, "--out", (out_ / name).string()});
-    return ChildProcess::start(args, out_ / "logs" / (name + ".log"));
+    return ChildProcess::start(launch.robot_args(i, out_ / name), out_ / "logs" / (name + ".log"));
   };
   const StopSignals stop;
   const auto t0 = std::chrono::steady_clock::now();
@@ -131,7 +110,7 @@ int TeamCommand::run() const {
     (*observer)->spin_once();
   }
   if (!all_joined()) return report_error(runtime_error("robots did not start within 60 s"));
-  Result<ChildProcess> sim = ChildProcess::start(sim_args, out_ / "logs" / "sim.log");
+  Result<ChildProcess> sim = ChildProcess::start(launch.sim, out_ / "logs" / "sim.log");
   if (!sim.ok()) return report_error(sim.error());
 
   TeamRunRecord run;
@@ -170,21 +149,14 @@ int TeamCommand::run() const {
         ev.restarted_at_s = t;
       }
     }
-    bool finished = t > 0.0;
-    int i = 0;
-    for (const auto& [name, r] : (*observer)->robots()) {
-      const RobotEvents& ev = run.events[static_cast<std::size_t>(i++)];
-      const bool dead = ev.killed_at_s && !ev.restarted_at_s;
-      const bool restarting = ev.killed_at_s && !dead && r.status &&
-                              1e-9 * static_cast<double>(r.status->header.stamp_ns) < *ev.restarted_at_s;
-      if (!dead && (restarting || !r.status || r.status->state != RobotStatusMessage::kFinished)) {
-        finished = false;
-      }
+    // A robot process that ended by itself (a crash) is dead from then on, as a killed one.
+    for (std::size_t k = 0; k < robots.size(); ++k) {
+      RobotEvents& ev = run.events[k];
+      if (!ev.killed_at_s && !ev.exited_at_s && !robots[k].running()) ev.exited_at_s = t;
     }
-    if (victim >= 0 && restart_after_s_ &&
-        !run.events[static_cast<std::size_t>(victim)].restarted_at_s) {
-      finished = false;
-    }
+    const bool finished = t > 0.0 && team_finished((*observer)->robots(), run.events) &&
+                          !(victim >= 0 && restart_after_s_ &&
+                            !run.events[static_cast<std::size_t>(victim)].restarted_at_s);
     if (finished) {
       run.end = "every robot finished";
       break;
@@ -207,22 +179,42 @@ int TeamCommand::run() const {
   }
   run.coverage.push_back(team_coverage(**observer, *world, reachable, run.sim_s));
   run.wall_s = seconds_since(t0);
+  for (int i = 0; i < robots_; ++i) {
+    // A robot killed and not restarted wrote none; one that did wrote it whole (atomically).
+    std::ifstream in(out_ / nodes::robot_name(i) / "report.json");
+    nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
+    run.robot_reports.push_back(r.is_discarded() ? nlohmann::json(nullptr) : r);
+  }
   nlohmann::json options = {{"world", world_.file ? world_.file->string() : world_.builtin},
-                            {"robots", robots_}, {"rate", rate_}, {"max_s", max_s_},
-                            {"resolution_m", resolution_m_}, {"domain", domain_}};
+                            {"robots", robots_},
+                            {"rate", rate_},
+                            {"max_s", max_s_},
+                            {"resolution_m", resolution_m_},
+                            {"domain", domain_}};
   if (victim >= 0) {
     options["kill_robot"] = *kill_robot_;
-    options["at_coverage"] = kill_at_coverage_ ? nlohmann::json(*kill_at_coverage_) : nlohmann::json(nullptr);
+    options["at_coverage"] =
+        kill_at_coverage_ ? nlohmann::json(*kill_at_coverage_) : nlohmann::json(nullptr);
     options["at_s"] = kill_at_s_ ? nlohmann::json(*kill_at_s_) : nlohmann::json(nullptr);
-    options["restart_after_s"] = restart_after_s_ ? nlohmann::json(*restart_after_s_) : nlohmann::json(nullptr);
+    options["restart_after_s"] =
+        restart_after_s_ ? nlohmann::json(*restart_after_s_) : nlohmann::json(nullptr);
   }
   nlohmann::json report = core_report({"team", seed_, options, run.wall_s, run.sim_s});
-  if (Status s = write_team_outputs(out_, **observer, run, report); !s) return report_error(s.error());
+  if (Status s = write_team_outputs(out_, **observer, run, report); !s) {
+    return report_error(s.error());
+  }
+  if (run.end == "the simulator ended") {
+    return report_error(runtime_error("the simulator ended before the team finished: see " +
+                                      (out_ / "logs" / "sim.log").string()));
+  }
   if (!quiet_) {
     const CoverageSample& c = run.coverage.back();
-    fmt::print("team: {} robots, {}, {:.1f} s simulated in {:.1f} s; coverage {:.2f} % ({:.2f} % shown free)\n",
-               robots_, run.end, run.sim_s, run.wall_s, 100.0 * c.known, 100.0 * c.free);
-    fmt::print("outputs: {}/map.yaml map.pgm map.png rN_truth.txt rN_slam.txt report.json\n", out_.string());
+    fmt::print(
+        "team: {} robots, {}, {:.1f} s simulated in {:.1f} s; coverage {:.2f} % ({:.2f} % shown "
+        "free)\n",
+        robots_, run.end, run.sim_s, run.wall_s, 100.0 * c.known, 100.0 * c.free);
+    fmt::print("outputs: {}/map.yaml map.pgm map.png rN_truth.txt rN_slam.txt report.json\n",
+               out_.string());
   }
   return kExitOk;
 }

@@ -158,7 +158,8 @@ std::string effective_config_yaml(const CLI::App& command) {
       out << YAML::Null;
     }
     out << YAML::EndMap;
-    const bool unset = values.empty() && !takes_many(*option);
+    // A list given no values is unset too: an empty list does not read back (CLI11 wants one).
+    const bool unset = values.empty();
     yaml += (unset ? "# " : "") + std::string(out.c_str()) + (unset ? "  (unset)" : "") + "\n";
   }
   return yaml;

@@ -46,6 +46,28 @@ nlohmann::json slam_error_json(const nodes::TeamObserverRobot& r) {
   return {{"poses", s.count}, {"rmse_m", s.rmse}, {"max_m", s.max}};
 }
 
+// What a robot sent on the team's map topics (its own map and its merged map) and on the claims,
+// per simulated second of the run, and its scan-to-map latency, from its own report.
+nlohmann::json traffic_json(const nlohmann::json& robot_report, const std::string& name,
+                            double sim_s) {
+  if (robot_report.is_null() || !robot_report.contains("traffic")) return nullptr;
+  const nlohmann::json& t = robot_report["traffic"];
+  const auto rates = [&](std::initializer_list<std::string> topics) {
+    double messages = 0.0, bytes = 0.0;
+    for (const std::string& topic : topics) {
+      if (!t.contains(topic)) continue;
+      messages += t[topic]["messages_sent"].get<double>();
+      bytes += t[topic]["bytes_sent"].get<double>();
+    }
+    return nlohmann::json{{"messages_per_s", sim_s > 0.0 ? messages / sim_s : 0.0},
+                          {"bytes_per_s", sim_s > 0.0 ? bytes / sim_s : 0.0}};
+  };
+  return {{"per", "simulated second"},
+          {"maps", rates({"/" + name + "/map", "/team/map"})},
+          {"claims", rates({"/team/claims"})},
+          {"map_latency", robot_report.value("map_latency", nlohmann::json(nullptr))}};
+}
+
 }  // namespace
 
 CoverageSample team_coverage(const nodes::TeamObserver& observer, const World& world,
@@ -58,8 +80,13 @@ Status write_team_outputs(const std::filesystem::path& out, const nodes::TeamObs
                           const TeamRunRecord& run, nlohmann::json report) {
   const World& world = *run.world;
   const OccupancyGrid merged = observer.merged(world.geometry());
+  // The merged map as map.pgm shows it (free, occupied, grey between), and as its probabilities
+  // cut at 0.5 would (every known cell free or occupied).
+  const TruthGrid truth(world.geometry(), world.solid_cells());
+  const MapSaveOptions shown;
   const MapAccuracy accuracy =
-      compare_to_truth(merged, TruthGrid(world.geometry(), world.solid_cells()));
+      compare_to_truth_as_shown(merged, truth, shown.free_thresh, shown.occupied_thresh);
+  const MapAccuracy at_half = compare_to_truth(merged, truth);
   nlohmann::json robots = nlohmann::json::array();
   RenderLayers layers;
   layers.map = &merged;
@@ -67,15 +94,21 @@ Status write_team_outputs(const std::filesystem::path& out, const nodes::TeamObs
   int i = 0;
   for (const auto& [name, r] : observer.robots()) {
     const RobotEvents& ev = run.events[static_cast<std::size_t>(i)];
-    nlohmann::json j = {{"name", name},
-                        {"start", {run.starts[static_cast<std::size_t>(i)].x,
-                                   run.starts[static_cast<std::size_t>(i)].y,
-                                   run.starts[static_cast<std::size_t>(i)].theta}},
-                        {"killed_at_s", or_null(ev.killed_at_s)},
-                        {"restarted_at_s", or_null(ev.restarted_at_s)},
-                        {"maps_received", r.maps_received},
-                        {"map_bytes_received", r.map_bytes_received},
-                        {"slam_position_error", slam_error_json(r)}};
+    nlohmann::json j = {
+        {"name", name},
+        {"start",
+         {run.starts[static_cast<std::size_t>(i)].x, run.starts[static_cast<std::size_t>(i)].y,
+          run.starts[static_cast<std::size_t>(i)].theta}},
+        {"killed_at_s", or_null(ev.killed_at_s)},
+        {"restarted_at_s", or_null(ev.restarted_at_s)},
+        {"exited_at_s", or_null(ev.exited_at_s)},
+        {"maps_received", r.maps_received},
+        {"map_bytes_received", r.map_bytes_received},
+        {"slam_position_error", slam_error_json(r)},
+        {"traffic", traffic_json(run.robot_reports.size() > static_cast<std::size_t>(i)
+                                     ? run.robot_reports[static_cast<std::size_t>(i)]
+                                     : nlohmann::json(nullptr),
+                                 name, run.sim_s)}};
     if (r.status) {
       j["state"] = r.status->state;
       j["reason"] = r.status->reason;
@@ -104,12 +137,19 @@ Status write_team_outputs(const std::filesystem::path& out, const nodes::TeamObs
       {"time_to_90_s", or_null(first_time_at(run.coverage, 0.90, true))},
       {"time_to_99_s", or_null(first_time_at(run.coverage, 0.99, true))},
       {"time_to_99_free_s", or_null(first_time_at(run.coverage, 0.99, false))},
-      {"coverage_series",
-       {{"columns", {"t_s", "known", "known_free"}}, {"rows", series}}},
+      {"coverage_series", {{"columns", {"t_s", "known", "known_free"}}, {"rows", series}}},
       {"maps_dropped", observer.maps_dropped()}};
   report["map_accuracy"] = map_accuracy_json(accuracy, Pose2{});
-  report["map_accuracy"]["truth"] =
-      "each truth cell against the merged map at its centre (team frame = world frame)";
+  report["map_accuracy"]["truth"] = fmt::format(
+      "each truth cell against the merged map as map.pgm shows it: free p <= {}, occupied p >= "
+      "{}, grey between (not compared); the team frame is the world frame",
+      shown.free_thresh, shown.occupied_thresh);
+  report["map_accuracy"]["threshold_view"] = {
+      {"occupied_threshold", 0.5},
+      {"cells_compared", at_half.cells_compared},
+      {"occupied_as_empty", at_half.occupied_as_empty},
+      {"empty_as_occupied", at_half.empty_as_occupied},
+      {"occupied_as_empty_share", at_half.occupied_as_empty_share()}};
   if (Status s = write_map_yaml(merged, out / "map.yaml"); !s) return s;
   if (Status s = write_png(out / "map.png", layers); !s) return s;
   return write_json_atomic(out / "report.json", report);

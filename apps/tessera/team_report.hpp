@@ -4,11 +4,10 @@
 // and report.json (coverage over time, time to 90 and 99 %, map accuracy, per robot its state,
 // stop reason, SLAM error against the truth and messages and bytes sent).
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "tessera/core/pose2.hpp"
 #include "tessera/core/result.hpp"
@@ -24,10 +23,12 @@ struct CoverageSample {
   double free = 0.0;   // ... and shows it free
 };
 
-/// A robot process's story: when it was killed and restarted (simulated seconds).
+/// A robot process's story: when it was killed on purpose, restarted, or ended by itself
+/// (simulated seconds).
 struct RobotEvents {
   std::optional<double> killed_at_s;
   std::optional<double> restarted_at_s;
+  std::optional<double> exited_at_s;
 };
 
 struct TeamRunRecord {
@@ -35,6 +36,8 @@ struct TeamRunRecord {
   std::vector<Pose2> starts;
   std::vector<CoverageSample> coverage;
   std::vector<RobotEvents> events;  // per robot
+  /// Per robot, its own report.json (tessera explore --ros), or null when it wrote none.
+  std::vector<nlohmann::json> robot_reports;
   double sim_s = 0.0;
   double wall_s = 0.0;
   std::string end;  // why the run ended

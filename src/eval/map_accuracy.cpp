@@ -1,21 +1,24 @@
 #include "tessera/eval/map_accuracy.hpp"
 
+#include <optional>
+
 namespace tessera {
 namespace {
 
-/// Counts every known cell of `map` against truth_solid(cell).
-template <typename TruthSolid>
-MapAccuracy count_against(const OccupancyGrid& map, double occupied_threshold,
-                          const TruthSolid& truth_solid) {
+/// Counts every cell of `map` that map_occupied(cell) classifies (nullopt: not compared) against
+/// truth_solid(cell).
+template <typename MapOccupied, typename TruthSolid>
+MapAccuracy count_cells(const OccupancyGrid& map, const MapOccupied& map_occupied_of,
+                        const TruthSolid& truth_solid) {
   const GridGeometry& g = map.geometry();
-  const float threshold_lo = log_odds(occupied_threshold);
   MapAccuracy a;
   for (int y = 0; y < g.height(); ++y) {
     for (int x = 0; x < g.width(); ++x) {
       const Cell c{x, y};
-      if (!map.known(c)) continue;
+      const std::optional<bool> occupied = map_occupied_of(c);
+      if (!occupied) continue;
       ++a.cells_compared;
-      const bool map_occupied = map.log_odds_at(c) >= threshold_lo;
+      const bool map_occupied = *occupied;
       const bool truth_occupied = truth_solid(c);
       if (truth_occupied) ++a.occupied_compared;
       if (map_occupied == truth_occupied) {
@@ -33,6 +36,20 @@ MapAccuracy count_against(const OccupancyGrid& map, double occupied_threshold,
   return a;
 }
 
+/// Counts every known cell of `map` against truth_solid(cell), occupied from occupied_threshold.
+template <typename TruthSolid>
+MapAccuracy count_against(const OccupancyGrid& map, double occupied_threshold,
+                          const TruthSolid& truth_solid) {
+  const float threshold_lo = log_odds(occupied_threshold);
+  return count_cells(
+      map,
+      [&](Cell c) -> std::optional<bool> {
+        if (!map.known(c)) return std::nullopt;
+        return map.log_odds_at(c) >= threshold_lo;
+      },
+      truth_solid);
+}
+
 }  // namespace
 
 MapAccuracy compare_to_truth(const OccupancyGrid& map, const TruthGrid& truth,
@@ -40,6 +57,21 @@ MapAccuracy compare_to_truth(const OccupancyGrid& map, const TruthGrid& truth,
   TESSERA_ASSERT(map.geometry().width() == truth.geometry().width() &&
                  map.geometry().height() == truth.geometry().height());
   return count_against(map, occupied_threshold, [&](Cell c) { return truth.solid(c); });
+}
+
+MapAccuracy compare_to_truth_as_shown(const OccupancyGrid& map, const TruthGrid& truth,
+                                      double free_at_most, double occupied_from) {
+  TESSERA_ASSERT(map.geometry().width() == truth.geometry().width() &&
+                 map.geometry().height() == truth.geometry().height());
+  TESSERA_ASSERT(free_at_most < occupied_from);
+  return count_cells(
+      map,
+      [&](Cell c) -> std::optional<bool> {
+        const std::optional<double> p = map.probability_at(c);
+        if (!p || (*p > free_at_most && *p < occupied_from)) return std::nullopt;
+        return *p >= occupied_from;
+      },
+      [&](Cell c) { return truth.solid(c); });
 }
 
 MapAccuracy compare_to_truth_at_centres(const OccupancyGrid& map, const TruthGrid& truth,

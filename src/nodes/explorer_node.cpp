@@ -20,7 +20,7 @@ using net::Transport;
 using Status_ = RobotStatusMessage;
 using SteadyClock = std::chrono::steady_clock;
 
-constexpr double kProgressStep_m = 0.1;   // progress that resets the stuck timer
+constexpr double kProgressStep_m = 0.1;    // progress that resets the stuck timer
 constexpr double kTargetResolved_m = 0.2;  // a target with no frontier this close is explored
 constexpr double kPlanningMargin_m = 1.0;  // the planning grid reaches this far past the maps
 
@@ -40,8 +40,8 @@ std::optional<std::string> validate(const ExplorerNodeOptions& o) {
   if (!found) return "the team must include this robot (" + o.name + ")";
   if (auto p = team::validate(o.route)) return "route: " + *p;
   if (auto p = validate(o.follower)) return "follower: " + *p;
-  for (const double v : {o.plan_period_s, o.team_map_period_wall_s, o.stuck_s,
-                         o.finish_after_s, o.status_period_s}) {
+  for (const double v : {o.plan_period_s, o.team_map_period_wall_s, o.stuck_s, o.finish_after_s,
+                         o.status_period_s}) {
     if (!(v > 0.0) || !std::isfinite(v)) return "periods and times must be > 0";
   }
   return std::nullopt;
@@ -62,7 +62,7 @@ struct ExplorerNode::State {
   Transport& transport;
   std::unique_ptr<SlamNode> slam;
   ExplorerNodeStats stats;
-  Pose2 T_team_map;  // this robot's map frame (its start) in the team frame
+  Pose2 T_team_map;           // this robot's map frame (its start) in the team frame
   team::MapMerger direct;     // this robot's and its teammates' own maps
   team::MapMerger team_maps;  // teammates' merged maps: cells no live map knows
   std::map<std::string, Pose2> T_team_teammate;
@@ -106,15 +106,14 @@ struct ExplorerNode::State {
       if (!r.ok()) return r.error();
     }
     const std::string ns = "/" + options.name;
-    for (Status s :
-         {transport.advertise({ns + "/cmd_vel", std::string(kRos2Twist), Qos::reliable(10)},
-                              cmd_writer),
-          transport.advertise({"/team/claims", std::string(kRos2FrontierClaim), kTeamQos},
-                              claim_writer),
-          transport.advertise({"/team/status", std::string(kRos2RobotStatus), kTeamQos},
-                              status_writer),
-          transport.advertise({"/team/map", std::string(kRos2OccupancyGrid), Qos::map()},
-                              team_map_writer)}) {
+    for (Status s : {transport.advertise(
+                         {ns + "/cmd_vel", std::string(kRos2Twist), Qos::reliable(10)}, cmd_writer),
+                     transport.advertise(
+                         {"/team/claims", std::string(kRos2FrontierClaim), kTeamQos}, claim_writer),
+                     transport.advertise({"/team/status", std::string(kRos2RobotStatus), kTeamQos},
+                                         status_writer),
+                     transport.advertise({"/team/map", std::string(kRos2OccupancyGrid), Qos::map()},
+                                         team_map_writer)}) {
       if (!s.ok()) return s;
     }
     const auto sub = [&](const char* topic, std::string_view type, const Qos& qos,
@@ -176,7 +175,8 @@ struct ExplorerNode::State {
     if (!m.ok() || m->robot_id == options.name || !T_team_teammate.contains(m->robot_id)) return;
     const Pose2 p = planar_pose(m->pose);
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-    teammates[m->robot_id] = {{p.x, p.y}, seconds(m->header.stamp_ns),
+    teammates[m->robot_id] = {{p.x, p.y},
+                              seconds(m->header.stamp_ns),
                               m->state == Status_::kExploring || m->state == Status_::kStarting};
   }
 
@@ -376,7 +376,8 @@ struct ExplorerNode::State {
     m.robot_id = options.name;
     m.state = state;
     m.reason = reason;
-    if (T_team_robot) m.pose = planar_transform(T_team_robot->x, T_team_robot->y, T_team_robot->theta);
+    if (T_team_robot)
+      m.pose = planar_transform(T_team_robot->x, T_team_robot->y, T_team_robot->theta);
     if (const OccupancyGrid* own = slam->map()) {
       const float free = log_odds(options.route.free_below);
       std::size_t n = 0;
@@ -402,10 +403,9 @@ struct ExplorerNode::State {
     last_team_map = SteadyClock::now();
     if (team_map.geometry().size() == 0) return Ok{};
     ++stats.team_maps_published;
-    return transport.publish(
-        team_map_writer,
-        encode_cdr(occupancy_grid_message(team_map, std::llround(now_s * 1e9),
-                                          options.name + "/team")));
+    return transport.publish(team_map_writer,
+                             encode_cdr(occupancy_grid_message(team_map, std::llround(now_s * 1e9),
+                                                               options.name + "/team")));
   }
 
   Status spin() {
@@ -466,5 +466,8 @@ const OccupancyGrid& ExplorerNode::team_map() const { return state_->team_map; }
 std::optional<Pose2> ExplorerNode::pose() const { return state_->pose(); }
 const ExplorerNodeStats& ExplorerNode::stats() const { return state_->stats; }
 const SlamNodeStats& ExplorerNode::slam_stats() const { return state_->slam->stats(); }
+const std::vector<double>& ExplorerNode::map_latencies_s() const {
+  return state_->slam->map_latencies_s();
+}
 
 }  // namespace tessera::nodes

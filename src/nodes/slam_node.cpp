@@ -42,6 +42,7 @@ struct SlamNode::State {
     // An odometry message at or after t_ns arrived after this scan did: the odometry around it
     // is in. (A log's stamps may go backwards, so older odometry with later stamps says nothing.)
     bool odometry_passed = false;
+    SteadyClock::time_point received{};  // when it came off the transport
   };
 
   SlamNodeOptions options;
@@ -58,6 +59,11 @@ struct SlamNode::State {
   std::int64_t last_map_stamp_ns = 0;
   bool started = false;
   std::optional<OccupancyGrid> last_map_grid;
+  // Receipt times of the scans added since the last map, and per scan the wall time from its
+  // receipt to the publication of the first map that holds it (the first kLatenciesKept).
+  static constexpr std::size_t kLatenciesKept = 1'000'000;
+  std::vector<SteadyClock::time_point> unmapped;
+  std::vector<double> map_latencies_s;
   Pose2 T_map_odom;
 
   State(const SlamNodeOptions& o, Transport& t) : options(o), transport(t), slam(o.slam) {}
@@ -134,8 +140,8 @@ struct SlamNode::State {
       pending.pop_front();
       ++stats.scans_dropped_overflow;
     }
-    pending.push_back(
-        {m->header.stamp_ns, std::string(tf_frame_name(m->header.frame_id)), std::move(*scan)});
+    pending.push_back({m->header.stamp_ns, std::string(tf_frame_name(m->header.frame_id)),
+                       std::move(*scan), false, SteadyClock::now()});
   }
 
   void on_odom(std::span<const std::uint8_t> cdr) {
@@ -202,6 +208,7 @@ struct SlamNode::State {
     if (Status added = slam.add_scan(scan); !added.ok()) return added.error();
     ++stats.scans_added;
     started = true;
+    unmapped.push_back(s.received);
     if (Status p = publish_pose(s.t_ns, scan.odometry); !p.ok()) return p.error();
     prune_odometry();
     pending.pop_front();
@@ -240,11 +247,17 @@ struct SlamNode::State {
 
   Status publish_map(std::int64_t stamp_ns, OccupancyGrid map) {
     last_map = SteadyClock::now();
+    for (const SteadyClock::time_point t : unmapped) {
+      if (map_latencies_s.size() < kLatenciesKept) {
+        map_latencies_s.push_back(std::chrono::duration<double>(last_map - t).count());
+      }
+    }
+    unmapped.clear();
     last_map_stamp_ns = stamp_ns;
     ++stats.maps_published;
     last_map_grid = std::move(map);
-    return transport.publish(
-        map_writer, encode_cdr(occupancy_grid_message(*last_map_grid, stamp_ns, options.map_frame)));
+    return transport.publish(map_writer, encode_cdr(occupancy_grid_message(*last_map_grid, stamp_ns,
+                                                                           options.map_frame)));
   }
 
   [[nodiscard]] bool map_due(std::int64_t stamp_ns) const {
@@ -315,6 +328,7 @@ const OccupancyGrid* SlamNode::map() const {
   return state_->last_map_grid ? &*state_->last_map_grid : nullptr;
 }
 Pose2 SlamNode::T_map_odom() const { return state_->T_map_odom; }
+const std::vector<double>& SlamNode::map_latencies_s() const { return state_->map_latencies_s; }
 std::optional<PoseAtNs> SlamNode::latest_odometry() const {
   if (state_->odometry.empty()) return std::nullopt;
   return state_->odometry.back();

@@ -45,8 +45,8 @@ struct TeamObserver::State {
       }
     }
     const Qos status_qos{Qos::Reliability::kReliable, Qos::Durability::kTransientLocal, 64};
-    if (Status s = sub("/team/status", kRos2RobotStatus, status_qos,
-                       [this](auto c) { on_status(c); });
+    if (Status s =
+            sub("/team/status", kRos2RobotStatus, status_qos, [this](auto c) { on_status(c); });
         !s.ok()) {
       return s;
     }

@@ -3,16 +3,31 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 
+#include "tessera/core/assert.hpp"
 #include "tessera/sim/tour.hpp"
 
 namespace tessera {
 
 Result<std::vector<Pose2>> team_starts(const World& world, int robots, double clearance_m,
-                                       double spacing_m) {
+                                       double spacing_m, double lattice_m) {
   const GridGeometry& g = world.geometry();
+  TESSERA_ASSERT(lattice_m > 0.0);
   const std::vector<std::uint8_t> room = room_for_robot(world, clearance_m);
+  // The centre of the lattice cell holding the world cell's centre, if that lies in a cell with
+  // room (a lattice coarser than the world's cells can reach into the next cell); else the world
+  // cell's centre.
+  const auto on_lattice = [&](Cell c) {
+    const Vec2 p = g.center_of(c);
+    const auto snap = [&](double v, double o) {
+      return o + (std::floor((v - o) / lattice_m + 1e-9) + 0.5) * lattice_m;
+    };
+    const Vec2 q{snap(p.x, g.origin().x), snap(p.y, g.origin().y)};
+    const std::optional<Cell> in = g.cell_at(q);
+    return in && room[g.index_of(*in)] != 0 ? q : p;
+  };
   // The largest 4-connected area with room and its centroid.
   std::vector<std::int32_t> label(g.size(), -1);
   std::vector<Cell> best_cells, queue;
@@ -55,9 +70,9 @@ Result<std::vector<Pose2>> team_starts(const World& world, int robots, double cl
   std::vector<std::uint8_t> seen(g.size(), 0);
   queue.assign(1, first);
   seen[g.index_of(first)] = 1;
-  for (std::size_t head = 0;
-       head < queue.size() && static_cast<int>(starts.size()) < robots; ++head) {
-    const Vec2 p = g.center_of(queue[head]);
+  for (std::size_t head = 0; head < queue.size() && static_cast<int>(starts.size()) < robots;
+       ++head) {
+    const Vec2 p = on_lattice(queue[head]);
     bool apart = true;
     for (const Pose2& s : starts) apart = apart && std::hypot(s.x - p.x, s.y - p.y) >= spacing_m;
     if (apart) starts.push_back({p.x, p.y, 0.0});

@@ -56,8 +56,8 @@ std::vector<Vec2> route_points(const DrivableMap& map, const MaskDijkstra& searc
   points.push_back(goal_m);
   // The robot's own point may lie outside the drivable cells (entry_cell): keep the first leg as
   // it is and pull the rest.
-  std::vector<Vec2> pulled = string_pull(
-      map.geometry, map.drivable, std::vector<Vec2>(points.begin() + 1, points.end()));
+  std::vector<Vec2> pulled =
+      string_pull(map.geometry, map.drivable, std::vector<Vec2>(points.begin() + 1, points.end()));
   pulled.insert(pulled.begin(), robot_m);
   return pulled;
 }

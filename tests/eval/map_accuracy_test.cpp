@@ -37,6 +37,23 @@ TEST(MapAccuracy, ThresholdDecidesWhatCountsAsOccupied) {
   EXPECT_EQ(compare_to_truth(map, truth, 0.5).correct, 1u);
 }
 
+TEST(MapAccuracy, AsShownCellsBetweenTheThresholdsAreGreyAndNotCompared) {
+  const TruthGrid truth = four_cells();
+  OccupancyGrid map(truth.geometry());
+  map.set_probability({0, 0}, 0.1);   // shown free: correct
+  map.set_probability({1, 0}, 0.4);   // a wall cell the map is unsure of: grey, not compared
+  map.set_probability({2, 0}, 0.8);   // free shown occupied
+  map.set_probability({3, 0}, 0.25);  // solid shown free (p == free_at_most is free)
+  const MapAccuracy a = compare_to_truth_as_shown(map, truth, 0.25, 0.65);
+  EXPECT_EQ(a.cells_compared, 3u);
+  EXPECT_EQ(a.correct, 1u);
+  EXPECT_EQ(a.empty_as_occupied, 1u);
+  EXPECT_EQ(a.occupied_as_empty, 1u);
+  EXPECT_EQ(a.occupied_compared, 1u);
+  // The threshold view counts the unsure wall cell as shown free.
+  EXPECT_EQ(compare_to_truth(map, truth).occupied_as_empty, 2u);
+}
+
 TEST(MapAccuracy, EmptyMapComparesNothing) {
   const TruthGrid truth = four_cells();
   const MapAccuracy a = compare_to_truth(OccupancyGrid(truth.geometry()), truth);

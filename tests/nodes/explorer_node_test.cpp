@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "tessera/net/in_process_transport.hpp"
 #include "tessera/nodes/sim_node.hpp"
 #include "tessera/nodes/team_observer.hpp"
+#include "tessera/record/ros_conversions.hpp"
 #include "tessera/sim/builtin_world.hpp"
 
 namespace tessera::nodes {
@@ -27,8 +29,8 @@ struct Kill {
 };
 
 struct TeamRun {
-  double coverage = 0.0;        // reachable free cells the map knows
-  double coverage_free = 0.0;   // ... and shows free
+  double coverage = 0.0;       // reachable free cells the map knows
+  double coverage_free = 0.0;  // ... and shows free
   double occupied_shown_free = 0.0;
   double sim_s = 0.0;
   std::vector<std::uint8_t> states;
@@ -68,10 +70,11 @@ TeamRun run_team(const World& world, const std::vector<Pose2>& starts, double ma
   TeamRun run;
   if (kill.robot >= 0) {
     const std::string topic = "/" + team[static_cast<std::size_t>(kill.robot)].name + "/map";
-    EXPECT_TRUE(obs_t->subscribe({topic, std::string(kRos2OccupancyGrid), net::Qos::map()},
-                                 [&run](std::span<const std::uint8_t> cdr) {
-                                   run.killed_map = *decode_cdr_occupancy_grid(cdr);
-                                 })
+    EXPECT_TRUE(obs_t
+                    ->subscribe({topic, std::string(kRos2OccupancyGrid), net::Qos::map()},
+                                [&run](std::span<const std::uint8_t> cdr) {
+                                  run.killed_map = *decode_cdr_occupancy_grid(cdr);
+                                })
                     .ok());
   }
   while ((*sim)->time_s() < max_s) {
@@ -103,12 +106,15 @@ TeamRun run_team(const World& world, const std::vector<Pose2>& starts, double ma
   const Cell start = *world.geometry().cell_at({starts[0].x, starts[0].y});
   run.coverage = coverage(merged, world.reachable_from(start), 1.0);
   run.coverage_free = coverage(merged, world.reachable_from(start));
+  // As the merged map's picture shows it (map.pgm's thresholds: grey between them).
   run.occupied_shown_free =
-      compare_to_truth(merged, TruthGrid(world.geometry(), world.solid_cells()))
+      compare_to_truth_as_shown(merged, TruthGrid(world.geometry(), world.solid_cells()), 0.25,
+                                0.65)
           .occupied_as_empty_share();
-  std::printf("team of %zu: %.1f s simulated, coverage %.4f (free %.4f), occupied shown free "
-              "%.4f\n",
-              starts.size(), run.sim_s, run.coverage, run.coverage_free, run.occupied_shown_free);
+  std::printf(
+      "team of %zu: %.1f s simulated, coverage %.4f (free %.4f), occupied shown free "
+      "%.4f\n",
+      starts.size(), run.sim_s, run.coverage, run.coverage_free, run.occupied_shown_free);
   return run;
 }
 
@@ -153,6 +159,93 @@ TEST(ExplorerNode, WhenARobotDiesItsPublishedCellsStayInTheTeamsMap) {
   }
   EXPECT_GT(known, 1000u);
   EXPECT_EQ(missing, 0u);
+}
+
+// The operator's commands on /team/command: stop holds the robot, return home drives it back to
+// its start and reports "at home", start sends it exploring again.
+TEST(ExplorerNode, StopReturnHomeAndStartCommands) {
+  const World world = builtin_world("office", 0.05);
+  net::InProcessBus bus;
+  auto sim_t = bus.join();
+  SimNodeOptions sim_options;
+  const Pose2 start{8.0125, 7.0125, 0.0};
+  sim_options.starts = {start};
+  auto sim = SimNode::create(world, sim_options, 3, *sim_t);
+  ASSERT_TRUE(sim.ok());
+  auto robot_t = bus.join();
+  ExplorerNodeOptions o;
+  o.name = "r1";
+  o.team = {{"r1", start}};
+  auto robot = ExplorerNode::create(o, *robot_t);
+  ASSERT_TRUE(robot.ok());
+  auto op = bus.join();
+  const auto writer =
+      op->advertise({"/team/command", std::string(kRos2TeamCommand), net::Qos::reliable(10)});
+  ASSERT_TRUE(writer.ok());
+  const auto command = [&](std::uint8_t c) {
+    TeamCommandMessage m;
+    m.command = c;
+    ASSERT_TRUE(op->publish(*writer, encode_cdr(m)).ok());
+  };
+  const auto run_for = [&](double s) {
+    const double end = (*sim)->time_s() + s;
+    while ((*sim)->time_s() < end) {
+      ASSERT_TRUE((*sim)->step().ok());
+      ASSERT_TRUE((*robot)->spin_once().ok());
+    }
+  };
+  run_for(6.0);
+  EXPECT_EQ((*robot)->state(), RobotStatusMessage::kExploring);
+  const Pose2 out = (*sim)->true_pose(0);
+  EXPECT_GT(std::hypot(out.x - start.x, out.y - start.y), 0.5);
+  command(TeamCommandMessage::kStop);
+  run_for(1.0);  // it stops at once; the sim's last command times out within 0.5 s
+  EXPECT_EQ((*robot)->state(), RobotStatusMessage::kStopped);
+  EXPECT_EQ((*robot)->reason(), "stopped by command");
+  const Pose2 held = (*sim)->true_pose(0);
+  run_for(2.0);
+  EXPECT_NEAR((*sim)->true_pose(0).x, held.x, 1e-9);
+  EXPECT_NEAR((*sim)->true_pose(0).y, held.y, 1e-9);
+  command(TeamCommandMessage::kReturnHome);
+  run_for(40.0);
+  EXPECT_EQ((*robot)->state(), RobotStatusMessage::kFinished);
+  EXPECT_EQ((*robot)->reason(), "at home");
+  const Pose2 home = (*sim)->true_pose(0);
+  EXPECT_LT(std::hypot(home.x - start.x, home.y - start.y), 0.3);
+  command(TeamCommandMessage::kStart);
+  run_for(3.0);
+  EXPECT_EQ((*robot)->state(), RobotStatusMessage::kExploring);
+  EXPECT_EQ((*robot)->stats().commands_received, 3u);
+  TeamCommandMessage unknown;
+  unknown.command = 9;
+  ASSERT_TRUE(op->publish(*writer, encode_cdr(unknown)).ok());
+  run_for(0.1);
+  EXPECT_EQ((*robot)->stats().commands_dropped, 1u);
+}
+
+// A teammate's map of another resolution, or bytes that are no map, are dropped and counted.
+TEST(ExplorerNode, ATeammatesMapOfAnotherResolutionIsDroppedAndCounted) {
+  net::InProcessBus bus;
+  auto robot_t = bus.join();
+  ExplorerNodeOptions o;
+  o.name = "r1";
+  o.team = {{"r1", Pose2{}}, {"r2", Pose2{1.0, 0.0, 0.0}}};
+  auto robot = ExplorerNode::create(o, *robot_t);
+  ASSERT_TRUE(robot.ok());
+  auto r2 = bus.join();
+  const auto writer = r2->advertise({"/r2/map", std::string(kRos2OccupancyGrid), net::Qos::map()});
+  ASSERT_TRUE(writer.ok());
+  OccupancyGrid coarse(GridGeometry({0.0, 0.0}, 0.1, 10, 10));
+  coarse.set_probability({1, 1}, 0.2);
+  ASSERT_TRUE(r2->publish(*writer, encode_cdr(occupancy_grid_message(coarse, 0, "map"))).ok());
+  ASSERT_TRUE((*robot)->spin_once().ok());  // a map reader keeps the latest only: read each
+  EXPECT_EQ((*robot)->stats().teammate_maps_dropped, 1u);
+  OccupancyGrid fine(GridGeometry({0.0, 0.0}, 0.05, 10, 10));
+  fine.set_probability({1, 1}, 0.2);
+  ASSERT_TRUE(r2->publish(*writer, encode_cdr(occupancy_grid_message(fine, 0, "map"))).ok());
+  ASSERT_TRUE((*robot)->spin_once().ok());
+  EXPECT_EQ((*robot)->stats().teammate_maps_dropped, 1u);
+  EXPECT_EQ((*robot)->stats().teammate_maps_received, 1u);
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ std::int8_t& at(OccupancyGridMessage& m, std::uint32_t x, std::uint32_t y) {
   return m.data[std::size_t{y} * m.width + x];
 }
 
-TEST(MapMerger, MapsAtKnownPosesCoverTheUnionAndOverlapsAddTheirEvidence) {
+TEST(MapMerger, MapsAtKnownPosesCoverTheUnionOverlapsAddAndObstaclesAreKept) {
   MapMerger team(0.1);
   OccupancyGridMessage a = grid(20, 10, 20);  // 2 m x 1 m, free-ish
   at(a, 15, 5) = 70;                          // one hit at (1.55, 0.55) in a's frame
@@ -41,8 +41,18 @@ TEST(MapMerger, MapsAtKnownPosesCoverTheUnionAndOverlapsAddTheirEvidence) {
   const double both = probability(2.0F * log_odds(0.2));
   EXPECT_NEAR(*merged.probability_at({12, 2}), both, 1e-6);
   EXPECT_NEAR(*merged.probability_at({25, 2}), 0.2, 1e-6);
-  // The hit, with r2's free evidence at the same place: log-odds add.
-  EXPECT_NEAR(*merged.probability_at({15, 5}), probability(log_odds(0.7) + log_odds(0.2)), 1e-6);
+  // r1's occupied cell where r2 saw free: the obstacle is kept (a planner must not drive into
+  // it); r1's weaker evidence (0.6 < kKeptOccupied) with r2's free adds up.
+  EXPECT_NEAR(*merged.probability_at({15, 5}), 0.7, 1e-6);
+  at(a, 16, 5) = 60;
+  ASSERT_TRUE(team.update("r1", a, Pose2{}).ok());
+  EXPECT_NEAR(*team.merged().probability_at({16, 5}), probability(log_odds(0.6) + log_odds(0.2)),
+              1e-6);
+  // Two robots that both see it occupied add their evidence.
+  OccupancyGridMessage c = grid(20, 10, 20);
+  at(c, 5, 5) = 70;
+  ASSERT_TRUE(team.update("r2", c, Pose2{1.0, 0.0, 0.0}).ok());
+  EXPECT_NEAR(*team.merged().probability_at({15, 5}), probability(2.0F * log_odds(0.7)), 1e-6);
 }
 
 TEST(MapMerger, ARotatedMapLandsOnTheRightCellsAndUnknownStaysUnknown) {

@@ -20,9 +20,9 @@ struct MapAccuracy {
 
   /// occupied_as_empty / occupied_compared; 0 when no solid cell was compared.
   [[nodiscard]] double occupied_as_empty_share() const {
-    return occupied_compared == 0 ? 0.0
-                                  : static_cast<double>(occupied_as_empty) /
-                                        static_cast<double>(occupied_compared);
+    return occupied_compared == 0
+               ? 0.0
+               : static_cast<double>(occupied_as_empty) / static_cast<double>(occupied_compared);
   }
 };
 
@@ -31,6 +31,15 @@ struct MapAccuracy {
 /// Precondition: map and truth have the same width and height. Cost: O(cells).
 [[nodiscard]] MapAccuracy compare_to_truth(const OccupancyGrid& map, const TruthGrid& truth,
                                            double occupied_threshold = 0.5);
+
+/// The map as its picture shows it (a ROS map_saver image, io/map_yaml.hpp): free where
+/// p <= free_at_most, occupied where p >= occupied_from, and cells in between, shown as unknown,
+/// not compared. What a user or a planner loading the saved map sees: a wall cell the map is
+/// unsure of (seen only at grazing angles) is shown grey, not free. Precondition: same width and
+/// height, free_at_most < occupied_from. Cost: O(cells).
+[[nodiscard]] MapAccuracy compare_to_truth_as_shown(const OccupancyGrid& map,
+                                                    const TruthGrid& truth, double free_at_most,
+                                                    double occupied_from);
 
 /// The same for a map on its own grid (a SLAM map: another origin and cell size, its own frame):
 /// a known map cell's truth is the world cell holding T_truth_map * (the map cell's centre), solid

@@ -114,6 +114,8 @@ class ExplorerNode {
   [[nodiscard]] std::optional<Pose2> pose() const;
   [[nodiscard]] const ExplorerNodeStats& stats() const;
   [[nodiscard]] const SlamNodeStats& slam_stats() const;
+  /// SlamNode::map_latencies_s of the robot's SLAM.
+  [[nodiscard]] const std::vector<double>& map_latencies_s() const;
 
  private:
   struct State;

@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "tessera/core/pose_interpolation.hpp"
 #include "tessera/core/result.hpp"
@@ -75,6 +76,9 @@ class SlamNode {
   [[nodiscard]] const OccupancyGrid* map() const;
   /// How many maps have been published: a planner's "is there a newer map".
   [[nodiscard]] std::uint64_t map_revision() const { return stats().maps_published; }
+  /// Per scan mapped, in order: wall seconds from its receipt to the publication of the first map
+  /// that holds it (the latency a teammate or viewer sees, less the transport's).
+  [[nodiscard]] const std::vector<double>& map_latencies_s() const;
   /// T_map_odom after the last scan added (REP-105's map -> odom); identity before the first.
   [[nodiscard]] Pose2 T_map_odom() const;
   /// The newest odometry message's T_odom_base and stamp; nullopt before the first. With

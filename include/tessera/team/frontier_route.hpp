@@ -80,8 +80,8 @@ struct FrontierRoute {
 
 /// True while every leg of `waypoints_m` from leg `from_leg` on still runs through drivable cells
 /// (a route made on an older map is checked against a newer one).
-[[nodiscard]] bool route_still_drivable(const DrivableMap& map,
-                                        std::span<const Vec2> waypoints_m, std::size_t from_leg);
+[[nodiscard]] bool route_still_drivable(const DrivableMap& map, std::span<const Vec2> waypoints_m,
+                                        std::size_t from_leg);
 
 /// True when a frontier cell lies within radius_m of p.
 [[nodiscard]] bool frontier_near(const DrivableMap& map, Vec2 p_m, double radius_m);

@@ -4,8 +4,12 @@
 // frame; with the pose of each map frame in the team's frame (known start poses, or found by map
 // matching), the merged map holds, per cell of one grid over all of them, the sum of the robots'
 // log-odds at the cell's centre: each robot's evidence counts once (their sensors are independent),
-// unknown where no robot has seen the cell. Maps of another resolution than the team's are refused
-// (the caller counts them): resampling would blur walls the team relies on.
+// unknown where no robot has seen the cell. One exception keeps obstacles: where a robot's map
+// holds a cell occupied (p >= kKeptOccupied), the merge keeps the most occupied robot's value, so
+// two robots whose maps sit a centimetre apart cannot erase a wall between them by adding one's
+// free rays to the other's hits (an obstacle shown free is the error a planner drives into;
+// decision 0022). Maps of another resolution than the team's are refused (the caller counts
+// them): resampling would blur walls the team relies on.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -16,6 +20,9 @@
 #include "tessera/io/ros_message_encoders.hpp"
 
 namespace tessera::team {
+
+/// A robot's occupied cell stays occupied in the merge (see above).
+inline constexpr double kKeptOccupied = 0.65;
 
 class MapMerger {
  public:
@@ -34,9 +41,12 @@ class MapMerger {
   /// The merged grid over the union of the maps' extents (empty without maps), axis-aligned with
   /// the team frame. Cost: O(cells of the merged grid x robots).
   [[nodiscard]] OccupancyGrid merged() const;
-  /// The same on a grid of the caller's (in the team frame, any resolution: each of its cells
-  /// takes the robots' values at its centre), e.g. a truth grid to score against or the union
-  /// extent grown by a margin for planning. Cost: O(cells of `into` x robots).
+  /// The same on a grid of the caller's in the team frame, e.g. a truth grid to score against or
+  /// the union extent grown by a margin for planning. When every robot's cells are cells of
+  /// `into` (same size, no rotation, origins whole cells apart: robots planning on their team's
+  /// maps), cell for cell, O(robot cells); otherwise each cell of `into` takes the most occupied
+  /// of the merged values at n x n points spread over it, n twice the ratio of its cell size to
+  /// the team's (at least 2), O(cells of `into` x n^2 x robots).
   [[nodiscard]] OccupancyGrid merged(const GridGeometry& into) const;
   /// The union of the maps' extents in the team frame as a grid of the team's resolution
   /// (empty geometry without maps), grown by margin_m on every side.

@@ -2,9 +2,12 @@
 // the path follower and the team's messages.
 #include "tessera/nodes/explorer_node.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <string_view>
 
 #include "tessera/io/ros_message_encoders.hpp"
 #include "tessera/io/tf_tree.hpp"
@@ -144,12 +147,15 @@ struct ExplorerNode::State {
 
   void on_team_map(std::span<const std::uint8_t> cdr) {
     Result<OccupancyGridMessage> m = decode_cdr_occupancy_grid(cdr);
-    // Frame "<robot>/team": whose merged map it is. This robot's own comes back too: skipped.
     if (!m.ok()) {
       ++stats.teammate_maps_dropped;
       return;
     }
-    const std::string robot(tf_frame_name(m->header.frame_id));
+    // Frame "<robot>/team": whose merged map it is. This robot's own comes back too: skipped.
+    const std::string_view frame = tf_frame_name(m->header.frame_id);
+    constexpr std::string_view kSuffix = "/team";
+    const std::string robot(
+        frame.ends_with(kSuffix) ? frame.substr(0, frame.size() - kSuffix.size()) : frame);
     if (robot == options.name) return;
     if (!team_maps.update(robot, *m, Pose2{}).ok()) {
       ++stats.teammate_maps_dropped;
@@ -399,12 +405,36 @@ struct ExplorerNode::State {
     return transport.publish(status_writer, encode_cdr(m));
   }
 
+  // The team map cut to its known cells: the planning margin is not sent, so merged maps that
+  // travel between robots never grow by it on each round trip.
   Status publish_team_map() {
     last_team_map = SteadyClock::now();
-    if (team_map.geometry().size() == 0) return Ok{};
+    const GridGeometry& g = team_map.geometry();
+    int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
+    for (int y = 0; y < g.height(); ++y) {
+      for (int x = 0; x < g.width(); ++x) {
+        if (!team_map.known({x, y})) continue;
+        x0 = std::min(x0, x);
+        y0 = std::min(y0, y);
+        x1 = std::max(x1, x);
+        y1 = std::max(y1, y);
+      }
+    }
+    if (x1 < 0) return Ok{};
+    const double r = g.resolution_m();
+    OccupancyGrid known(
+        GridGeometry({g.origin().x + x0 * r, g.origin().y + y0 * r}, r, x1 - x0 + 1, y1 - y0 + 1));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        if (team_map.known({x, y})) {
+          known.add_log_odds({x - x0, y - y0}, team_map.log_odds_at({x, y}),
+                             -std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
+        }
+      }
+    }
     ++stats.team_maps_published;
     return transport.publish(team_map_writer,
-                             encode_cdr(occupancy_grid_message(team_map, std::llround(now_s * 1e9),
+                             encode_cdr(occupancy_grid_message(known, std::llround(now_s * 1e9),
                                                                options.name + "/team")));
   }
 

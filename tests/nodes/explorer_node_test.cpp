@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -37,6 +38,7 @@ struct TeamRun {
   std::vector<std::string> reasons;
   std::optional<OccupancyGridMessage> killed_map;  // the killed robot's last map
   std::vector<OccupancyGrid> team_maps;            // each surviving robot's team map at the end
+  double largest_team_map_m2 = 0.0;                // of the /team/map messages
 };
 
 // The simulator, the robots and an observer on one in-process bus, stepped in turn until every
@@ -77,6 +79,18 @@ TeamRun run_team(const World& world, const std::vector<Pose2>& starts, double ma
                                 })
                     .ok());
   }
+  EXPECT_TRUE(obs_t
+                  ->subscribe({"/team/map",
+                               std::string(kRos2OccupancyGrid),
+                               {net::Qos::Reliability::kReliable,
+                                net::Qos::Durability::kTransientLocal, 64}},
+                              [&run](std::span<const std::uint8_t> cdr) {
+                                const OccupancyGridMessage m = *decode_cdr_occupancy_grid(cdr);
+                                const double r = m.resolution_m;
+                                run.largest_team_map_m2 =
+                                    std::max(run.largest_team_map_m2, m.width * r * m.height * r);
+                              })
+                  .ok());
   while ((*sim)->time_s() < max_s) {
     EXPECT_TRUE((*sim)->step().ok());
     if (kill.robot >= 0 && robots[static_cast<std::size_t>(kill.robot)] &&
@@ -159,6 +173,9 @@ TEST(ExplorerNode, WhenARobotDiesItsPublishedCellsStayInTheTeamsMap) {
   }
   EXPECT_GT(known, 1000u);
   EXPECT_EQ(missing, 0u);
+  // Merged maps travel between robots cut to what they know: they never outgrow the building.
+  EXPECT_GT(run.largest_team_map_m2, 0.0);
+  EXPECT_LE(run.largest_team_map_m2, 16.5 * 12.5);
 }
 
 // The operator's commands on /team/command: stop holds the robot, return home drives it back to

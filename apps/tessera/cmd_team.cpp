@@ -210,8 +210,8 @@ int TeamCommand::run() const {
   if (!quiet_) {
     const CoverageSample& c = run.coverage.back();
     fmt::print(
-        "team: {} robots, {}, {:.1f} s simulated in {:.1f} s; coverage {:.2f} % ({:.2f} % shown "
-        "free)\n",
+        "team: {} robots, {}, {:.1f} s simulated in {:.1f} s; the merged map knows {:.2f} % of the "
+        "reachable free space ({:.2f} % shown free)\n",
         robots_, run.end, run.sim_s, run.wall_s, 100.0 * c.known, 100.0 * c.free);
     fmt::print("outputs: {}/map.yaml map.pgm map.png rN_truth.txt rN_slam.txt report.json\n",
                out_.string());

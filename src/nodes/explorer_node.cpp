@@ -20,7 +20,7 @@ namespace {
 
 using net::Qos;
 using net::Transport;
-using Status_ = RobotStatusMessage;
+using RobotState = RobotStatusMessage;  // its state constants
 using SteadyClock = std::chrono::steady_clock;
 
 constexpr double kProgressStep_m = 0.1;    // progress that resets the stuck timer
@@ -76,7 +76,7 @@ struct ExplorerNode::State {
   std::optional<team::DrivableMap> drivable;
   Transport::WriterId cmd_writer = 0, claim_writer = 0, status_writer = 0, team_map_writer = 0;
 
-  std::uint8_t state = Status_::kStarting;
+  std::uint8_t state = RobotState::kStarting;
   std::string reason;
   std::optional<PathFollower> follower;
   std::optional<Vec2> target_m;  // frontier target (exploring) or home (returning)
@@ -181,9 +181,10 @@ struct ExplorerNode::State {
     if (!m.ok() || m->robot_id == options.name || !T_team_teammate.contains(m->robot_id)) return;
     const Pose2 p = planar_pose(m->pose);
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-    teammates[m->robot_id] = {{p.x, p.y},
-                              seconds(m->header.stamp_ns),
-                              m->state == Status_::kExploring || m->state == Status_::kStarting};
+    teammates[m->robot_id] = {
+        {p.x, p.y},
+        seconds(m->header.stamp_ns),
+        m->state == RobotState::kExploring || m->state == RobotState::kStarting};
   }
 
   void on_command(std::span<const std::uint8_t> cdr) {
@@ -197,11 +198,11 @@ struct ExplorerNode::State {
     drop_route();
     no_frontier_since_s = -1.0;
     if (m->command == TeamCommandMessage::kStart) {
-      set_state(Status_::kExploring, "");
+      set_state(RobotState::kExploring, "");
     } else if (m->command == TeamCommandMessage::kStop) {
-      set_state(Status_::kStopped, "stopped by command");
+      set_state(RobotState::kStopped, kReasonStoppedByCommand);
     } else {
-      set_state(Status_::kReturningHome, "");
+      set_state(RobotState::kReturningHome, "");
     }
     last_status_s = -1e9;  // say so at once
   }
@@ -223,7 +224,7 @@ struct ExplorerNode::State {
   }
 
   void give_up_target() {
-    if (target_m && state == Status_::kExploring) {
+    if (target_m && state == RobotState::kExploring) {
       given_up_m.push_back(*target_m);
       ++stats.targets_given_up;
     }
@@ -314,10 +315,10 @@ struct ExplorerNode::State {
   Status plan(const Pose2& T_team_robot) {
     if (!drivable) return Ok{};
     const Vec2 robot{T_team_robot.x, T_team_robot.y};
-    if (state == Status_::kReturningHome) {
+    if (state == RobotState::kReturningHome) {
       if (follower && follower->arrived()) {
         drop_route();
-        set_state(Status_::kFinished, "at home");
+        set_state(RobotState::kFinished, kReasonAtHome);
         return Ok{};
       }
       if (!follower || !team::route_still_drivable(*drivable, follower->waypoints(), 0)) {
@@ -329,8 +330,8 @@ struct ExplorerNode::State {
       }
       return Ok{};
     }
-    const bool exploring = state == Status_::kStarting || state == Status_::kExploring ||
-                           (state == Status_::kFinished && reason == "no reachable frontier");
+    const bool exploring = state == RobotState::kStarting || state == RobotState::kExploring ||
+                           (state == RobotState::kFinished && reason == kReasonNoFrontier);
     if (!exploring) return Ok{};
     if (follower) {
       const bool explored = !team::frontier_near(*drivable, *target_m, kTargetResolved_m);
@@ -346,15 +347,15 @@ struct ExplorerNode::State {
         *drivable, robot, active_teammates(), others, given_up_m, options.route);
     if (!route) {
       if (no_frontier_since_s < 0.0) no_frontier_since_s = now_s;
-      if (state != Status_::kFinished && now_s - no_frontier_since_s >= options.finish_after_s) {
-        set_state(Status_::kFinished, "no reachable frontier");
+      if (state != RobotState::kFinished && now_s - no_frontier_since_s >= options.finish_after_s) {
+        set_state(RobotState::kFinished, kReasonNoFrontier);
         last_status_s = -1e9;
         return publish_claim(false, 0.0);
       }
       return Ok{};
     }
     no_frontier_since_s = -1.0;
-    set_state(Status_::kExploring, "");
+    set_state(RobotState::kExploring, "");
     const double length = route->length_m;
     start_route(std::move(route->waypoints_m), route->target_m);
     return publish_claim(true, length);
@@ -362,7 +363,7 @@ struct ExplorerNode::State {
 
   Status drive(const Pose2& T_team_robot) {
     TwistMessage cmd;
-    if (follower && (state == Status_::kExploring || state == Status_::kReturningHome)) {
+    if (follower && (state == RobotState::kExploring || state == RobotState::kReturningHome)) {
       const VelocityCommand v = follower->command(T_team_robot);
       cmd.linear_x_mps = v.v_m_per_s;
       cmd.angular_z_radps = v.omega_rad_per_s;
@@ -382,8 +383,9 @@ struct ExplorerNode::State {
     m.robot_id = options.name;
     m.state = state;
     m.reason = reason;
-    if (T_team_robot)
+    if (T_team_robot) {
       m.pose = planar_transform(T_team_robot->x, T_team_robot->y, T_team_robot->theta);
+    }
     if (const OccupancyGrid* own = slam->map()) {
       const float free = log_odds(options.route.free_below);
       std::size_t n = 0;
@@ -482,7 +484,7 @@ Status ExplorerNode::spin_once() { return state_->spin(); }
 Result<slam::LaserSlamResult> ExplorerNode::finish() {
   State& s = *state_;
   s.drop_route();
-  if (s.state != Status_::kFinished) s.set_state(Status_::kStopped, "shut down");
+  if (s.state != RobotState::kFinished) s.set_state(RobotState::kStopped, kReasonShutDown);
   for (Status st : {s.transport.publish(s.cmd_writer, encode_cdr(TwistMessage{})),
                     s.publish_claim(false, 0.0), s.publish_status(s.pose())}) {
     if (!st.ok()) return st.error();

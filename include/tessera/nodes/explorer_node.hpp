@@ -30,6 +30,12 @@
 
 namespace tessera::nodes {
 
+/// Why an explorer stopped (RobotStatus::reason, ExplorerNode::reason()).
+inline constexpr const char* kReasonNoFrontier = "no reachable frontier";
+inline constexpr const char* kReasonStoppedByCommand = "stopped by command";
+inline constexpr const char* kReasonAtHome = "at home";
+inline constexpr const char* kReasonShutDown = "shut down";
+
 /// A robot of the team and where its map frame (its start pose) is in the team frame.
 struct TeamMember {
   std::string name;  // "r1": namespace /r1
@@ -99,14 +105,14 @@ class ExplorerNode {
   /// Delivers what arrived, runs SLAM on it, re-plans when due and sends the velocity command
   /// for the newest odometry. kRuntime error when SLAM or a publication fails.
   [[nodiscard]] Status spin_once();
-  /// Stops the robot, releases its claim and says why in a last status ("shut down" unless it
-  /// had finished), then finishes the SLAM (SlamNode::finish).
+  /// Stops the robot, releases its claim and says why in a last status (kReasonShutDown unless
+  /// it had finished), then finishes the SLAM (SlamNode::finish).
   [[nodiscard]] Result<slam::LaserSlamResult> finish();
 
   /// A RobotStatusMessage state constant.
   [[nodiscard]] std::uint8_t state() const;
-  /// Why the robot stopped exploring ("no reachable frontier", "stopped by command", "at home");
-  /// empty while it explores.
+  /// Why the robot stopped exploring (kReasonNoFrontier, kReasonStoppedByCommand, kReasonAtHome,
+  /// kReasonShutDown); empty while it explores.
   [[nodiscard]] const std::string& reason() const;
   /// The team map the robot plans on (team frame); empty before its first map.
   [[nodiscard]] const OccupancyGrid& team_map() const;

@@ -1,5 +1,7 @@
-// tessera play: a CARMEN log played as ROS 2 topics (nodes/log_player.hpp) on Cyclone DDS, paced
-// by its stamps, so that `tessera slam --ros` (or any ROS 2 node) runs on real data.
+// tessera play: a CARMEN log or a ROS bag played as ROS 2 topics (nodes/log_player.hpp) on
+// Cyclone DDS, paced by its stamps, so that `tessera slam --ros` (or any ROS 2 node) runs on real
+// data. A bag is read as `tessera slam --bag` reads it (io/robot_bag.hpp: one scan topic, one
+// odometry topic, the laser's place from its tf).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,18 +11,44 @@
 #include "commands.hpp"
 #include "dds_options.hpp"
 #include "tessera/io/carmen_log.hpp"
+#include "tessera/io/robot_bag.hpp"
+#include "tessera/io/ros_bag.hpp"
 #include "tessera/nodes/log_player.hpp"
 
 namespace tessera::cli {
+namespace {
+
+// The scans and odometry to play: a bag read as `slam --bag` reads it, or a CARMEN log.
+Result<LaserLog> read_played_log(const std::filesystem::path& path, const std::string& scan_topic,
+                                 const std::string& odom_topic) {
+  if (is_ros_bag_path(path)) {
+    Result<RobotBag> bag = read_robot_bag(path, {scan_topic, odom_topic, ""});
+    if (!bag.ok()) return bag.error();
+    return std::move(bag->log);
+  }
+  if (!scan_topic.empty() || !odom_topic.empty()) {
+    return usage_error("--scan-topic and --odom-topic choose a bag's topics; " + path.string() +
+                       " is no bag");
+  }
+  return read_carmen_log(path);
+}
+
+}  // namespace
 
 PlayCommand::PlayCommand(CLI::App& app) {
   sub_ = app.add_subcommand(
       "play",
-      "Play a laser log as ROS 2 topics on Cyclone DDS: <ns>/scan, <ns>/odom, /clock and "
-      "/tf_static (base_link -> laser), each scan at its stamp scaled by --rate, once the first "
-      "subscriber of the scans has appeared.");
-  sub_->add_option("log", log_, "Laser log: CARMEN .clf/.log (FLASER, ROBOTLASER1, RAWLASER1)")
+      "Play a laser log or a ROS bag as ROS 2 topics on Cyclone DDS: <ns>/scan, <ns>/odom, /clock "
+      "and /tf_static (base_link -> laser), each scan at its stamp scaled by --rate, once the "
+      "first subscriber of the scans has appeared.");
+  sub_->add_option("log", log_,
+                   "CARMEN log (.clf/.log: FLASER, ROBOTLASER1, RAWLASER1) or ROS bag (.bag, .db3, "
+                   ".mcap or a ROS 2 bag folder)")
       ->required();
+  sub_->add_option("--scan-topic", scan_topic_,
+                   "Bag: the LaserScan topic (default: the bag's only one)");
+  sub_->add_option("--odom-topic", odom_topic_,
+                   "Bag: the Odometry topic (default: the bag's only one)");
   sub_->add_option("--rate", rate_, "Log seconds per wall-clock second (0: as fast as possible)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
@@ -36,7 +64,7 @@ PlayCommand::PlayCommand(CLI::App& app) {
 }
 
 int PlayCommand::run() const {
-  Result<LaserLog> log = read_carmen_log(log_);
+  Result<LaserLog> log = read_played_log(log_, scan_topic_, odom_topic_);
   if (!log.ok()) return report_error(log.error());
   Result<std::unique_ptr<net::Transport>> transport = open_dds(domain_, network_);
   if (!transport.ok()) return report_error(transport.error());

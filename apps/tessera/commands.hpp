@@ -304,6 +304,8 @@ class PlayCommand : public Command {
  private:
   std::filesystem::path log_;
   double rate_ = 1.0;  // 0: as fast as possible
+  std::string scan_topic_;  // a bag's topics; empty: its only one
+  std::string odom_topic_;
   std::string ns_;
   std::uint32_t domain_ = 0;
   bool network_ = false;

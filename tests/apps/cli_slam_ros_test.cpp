@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
 #include <thread>
 
 #include "cli_run.hpp"
@@ -19,30 +21,49 @@ namespace {
 
 using ::testing::HasSubstr;
 
-TEST(CliSlamRos, PlayedScansAreAllMappedByTheLiveNode) {
-  const auto log = support::data_path("laser/intel/intel-raw-first5505-sot.clf");
-  TESSERA_REQUIRE_DATA(log);
-  const support::TempDir dir;
+// `tessera slam --ros` in the background and `tessera play <play_args>` into it, on this test's
+// DDS domain. The SLAM node finishes 3 s after the last scan (at most 300 s: if the player fails,
+// no scan comes and nothing else would stop it). Returns the player's run and the node's report
+// (null when it wrote none; `slam_said` then holds its output).
+struct LivePlay {
+  support::CliRun play;
+  nlohmann::json report;
+  std::string slam_said;
+};
+
+LivePlay play_into_live_slam(const support::TempDir& dir, const std::string& play_args) {
   const std::string domain = std::to_string(support::test_dds_domain());
   const std::string out = (dir.path() / "slam").string();
-  // The SLAM node in the background finishes 3 s after the last scan (at most 300 s: if the
-  // player fails, no scan comes and nothing else would stop it).
   const std::string slam_cmd =
       "timeout 300 " + std::string(TESSERA_CLI) + " slam --ros --quiet --domain " + domain +
       " --idle-exit-s 3 --out " + out + " > " + (dir.path() / "slam.txt").string() + " 2>&1";
   std::thread slam([&] { std::system(slam_cmd.c_str()); });
-  const auto play = support::run_cli("play " + log.string() + " --rate 10 --max-scans 400 " +
-                                     "--domain " + domain + " --wait-s 60");
+  LivePlay run;
+  run.play = support::run_cli("play " + play_args + " --domain " + domain + " --wait-s 60");
   slam.join();
-  EXPECT_EQ(play.exit_code, 0) << play.output;
-  EXPECT_THAT(play.output, HasSubstr("play: 400 scans published"));
   std::ifstream in(dir.path() / "slam" / "report.json");
-  ASSERT_TRUE(in) << "no report; slam said: " << std::ifstream(dir.path() / "slam.txt").rdbuf();
-  const nlohmann::json report = nlohmann::json::parse(in);
-  EXPECT_EQ(report["ros"]["scans_received"], 400);
-  EXPECT_EQ(report["ros"]["scans_added"], 400);
-  EXPECT_EQ(report["ros"]["scans_dropped_overflow"], 0);
-  EXPECT_GE(report["ros"]["maps_published"].get<int>(), 1);
+  if (in) {
+    run.report = nlohmann::json::parse(in);
+  } else {
+    std::ostringstream said;
+    said << std::ifstream(dir.path() / "slam.txt").rdbuf();
+    run.slam_said = said.str();
+  }
+  return run;
+}
+
+TEST(CliSlamRos, PlayedScansAreAllMappedByTheLiveNode) {
+  const auto log = support::data_path("laser/intel/intel-raw-first5505-sot.clf");
+  TESSERA_REQUIRE_DATA(log);
+  const support::TempDir dir;
+  const LivePlay run = play_into_live_slam(dir, log.string() + " --rate 10 --max-scans 400");
+  EXPECT_EQ(run.play.exit_code, 0) << run.play.output;
+  EXPECT_THAT(run.play.output, HasSubstr("play: 400 scans published"));
+  ASSERT_FALSE(run.report.is_null()) << "no report; slam said: " << run.slam_said;
+  EXPECT_EQ(run.report["ros"]["scans_received"], 400);
+  EXPECT_EQ(run.report["ros"]["scans_added"], 400);
+  EXPECT_EQ(run.report["ros"]["scans_dropped_overflow"], 0);
+  EXPECT_GE(run.report["ros"]["maps_published"].get<int>(), 1);
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "slam" / "map.png"));
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "slam" / "trajectory.txt"));
 }
@@ -52,22 +73,12 @@ TEST(CliSlamRos, PlayedBagScansAreAllMappedByTheLiveNode) {
   const auto bag = support::data_path("bags/ros2_neato_obstacle_avoider");
   TESSERA_REQUIRE_DATA(bag);
   const support::TempDir dir;
-  const std::string domain = std::to_string(support::test_dds_domain());
-  const std::string out = (dir.path() / "slam").string();
-  const std::string slam_cmd =
-      "timeout 300 " + std::string(TESSERA_CLI) + " slam --ros --quiet --domain " + domain +
-      " --idle-exit-s 3 --out " + out + " > " + (dir.path() / "slam.txt").string() + " 2>&1";
-  std::thread slam([&] { std::system(slam_cmd.c_str()); });
-  const auto play = support::run_cli(
-      "play " + bag.string() + " --scan-topic /scan --rate 10 --domain " + domain + " --wait-s 60");
-  slam.join();
-  EXPECT_EQ(play.exit_code, 0) << play.output;
-  EXPECT_THAT(play.output, HasSubstr("play: 153 scans published"));
-  std::ifstream in(dir.path() / "slam" / "report.json");
-  ASSERT_TRUE(in) << "no report; slam said: " << std::ifstream(dir.path() / "slam.txt").rdbuf();
-  const nlohmann::json report = nlohmann::json::parse(in);
-  EXPECT_EQ(report["ros"]["scans_received"], 153);
-  EXPECT_EQ(report["ros"]["scans_added"], 153);
+  const LivePlay run = play_into_live_slam(dir, bag.string() + " --scan-topic /scan --rate 10");
+  EXPECT_EQ(run.play.exit_code, 0) << run.play.output;
+  EXPECT_THAT(run.play.output, HasSubstr("play: 153 scans published"));
+  ASSERT_FALSE(run.report.is_null()) << "no report; slam said: " << run.slam_said;
+  EXPECT_EQ(run.report["ros"]["scans_received"], 153);
+  EXPECT_EQ(run.report["ros"]["scans_added"], 153);
 }
 
 TEST(CliSlamRos, BadCombinationsAndLogsAreErrors) {

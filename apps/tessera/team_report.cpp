@@ -11,7 +11,6 @@
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/tum_trajectory.hpp"
-#include "tessera/nodes/sim_node.hpp"
 #include "tessera/render/render.hpp"
 
 namespace tessera::cli {

@@ -18,6 +18,9 @@
 namespace tessera::cli {
 namespace {
 
+// How long the player waits after its scan writer has found a reader before it sends (below).
+constexpr int kDiscoveryGraceMs = 500;
+
 // The scans and odometry to play: a bag read as `slam --bag` reads it, or a CARMEN log.
 Result<LaserLog> read_played_log(const std::filesystem::path& path, const std::string& scan_topic,
                                  const std::string& odom_topic) {
@@ -82,6 +85,10 @@ int PlayCommand::run() const {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+  // DDS discovery is two-way and the two halves need not finish together: our writer can know
+  // the reader before the reader knows our writer, and a best-effort reader drops what comes
+  // from a writer it has not yet discovered. A moment's grace lets the first scans count.
+  std::this_thread::sleep_for(std::chrono::milliseconds(kDiscoveryGraceMs));
   const std::int64_t total =
       max_scans_ > 0
           ? std::min<std::int64_t>(max_scans_, static_cast<std::int64_t>(log->scans.size()))

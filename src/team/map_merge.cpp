@@ -2,6 +2,7 @@
 #include "tessera/team/map_merge.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -34,64 +35,151 @@ struct View {
   double cos_theta, sin_theta;  // of T_origin_team, once per map rather than per point
 };
 
-// 0 and 100 percent are a robot's certainty, kept finite: 0.5 % and 99.5 %.
+// 0 and 100 percent are a robot's certainty, kept finite: 0.5 % and 99.5 %. Tabulated: the
+// merge looks a value up for every sample of every cell. Precondition: value in [0, 100].
 float value_log_odds(std::int8_t value) {
-  return log_odds(std::clamp(value / 100.0, 0.005, 0.995));
+  static const std::array<float, 101> table = [] {
+    std::array<float, 101> t{};
+    for (std::size_t v = 0; v < t.size(); ++v) {
+      t[v] = log_odds(std::clamp(static_cast<double>(v) / 100.0, 0.005, 0.995));
+    }
+    return t;
+  }();
+  return table[static_cast<std::size_t>(value)];
 }
 
-// When every robot's cells are cells of `g` (same size, no rotation, origins a whole number of
-// cells apart), as for a robot planning on the union of its team's maps: each robot cell is added
-// to its cell of `g` directly, O(robot cells), with the rule of merged(). nullopt otherwise.
-std::optional<OccupancyGrid> merged_cell_for_cell(const GridGeometry& g,
-                                                  const std::vector<View>& views,
-                                                  float kept_occupied) {
-  struct Offset {
-    long x, y;
-  };
-  std::vector<Offset> offsets;
-  const double r = g.resolution_m();
-  for (const View& v : views) {
-    // The robot grid's origin in the team frame, in cells of g.
-    const Pose2 T_team_origin = v.T_origin_team.inverse();
-    const double ox = (T_team_origin.x - g.origin().x) / r;
-    const double oy = (T_team_origin.y - g.origin().y) / r;
-    const bool aligned = std::abs(v.map->resolution_m - r) <= 1e-6 * r &&
-                         std::abs(v.sin_theta) <= 1e-9 && v.cos_theta > 0.0 &&
-                         std::abs(ox - std::round(ox)) <= 1e-4 &&
-                         std::abs(oy - std::round(oy)) <= 1e-4;
-    if (!aligned) return std::nullopt;
-    offsets.push_back({std::lround(ox), std::lround(oy)});
+// The robots' values per cell of the merged grid: their log-odds summed, the most occupied one
+// kept where a robot holds the cell occupied (map_merge.hpp).
+class Accumulator {
+ public:
+  explicit Accumulator(const GridGeometry& g)
+      : g_(g),
+        sum_(g.size(), 0.0f),
+        most_(g.size(), -std::numeric_limits<float>::max()),
+        known_(g.size(), 0) {}
+  void add(std::size_t i, float l) {
+    sum_[i] += l;
+    most_[i] = std::max(most_[i], l);
+    known_[i] = 1;
   }
-  std::vector<float> sum(g.size(), 0.0f);
-  std::vector<float> most(g.size(), -std::numeric_limits<float>::max());
-  std::vector<std::uint8_t> known(g.size(), 0);
-  for (std::size_t k = 0; k < views.size(); ++k) {
-    const OccupancyGridMessage& m = *views[k].map;
-    for (long y = 0; y < static_cast<long>(m.height); ++y) {
-      const long ty = y + offsets[k].y;
-      if (ty < 0 || ty >= g.height()) continue;
-      for (long x = 0; x < static_cast<long>(m.width); ++x) {
-        const long tx = x + offsets[k].x;
-        const std::int8_t value =
-            m.data[static_cast<std::size_t>(y) * m.width + static_cast<std::size_t>(x)];
-        if (tx < 0 || tx >= g.width() || value < 0 || value > 100) continue;
-        const std::size_t i = static_cast<std::size_t>(ty) * static_cast<std::size_t>(g.width()) +
-                              static_cast<std::size_t>(tx);
-        const float l = value_log_odds(value);
-        sum[i] += l;
-        most[i] = std::max(most[i], l);
-        known[i] = 1;
+  [[nodiscard]] OccupancyGrid grid(float kept_occupied) const {
+    OccupancyGrid out(g_);
+    for (std::size_t i = 0; i < g_.size(); ++i) {
+      if (known_[i] == 0) continue;
+      const float l = most_[i] >= kept_occupied ? std::max(sum_[i], most_[i]) : sum_[i];
+      out.add_log_odds(g_.cell_of(i), l, -std::numeric_limits<float>::max(),
+                       std::numeric_limits<float>::max());
+    }
+    return out;
+  }
+
+ private:
+  GridGeometry g_;
+  std::vector<float> sum_, most_;
+  std::vector<std::uint8_t> known_;
+};
+
+// A robot's value at a point of its grid's origin frame; nullopt where unknown or outside.
+std::optional<float> value_at(const OccupancyGridMessage& m, double inv_r, double x, double y) {
+  const auto cx = static_cast<long>(std::floor(x * inv_r));
+  const auto cy = static_cast<long>(std::floor(y * inv_r));
+  if (cx < 0 || cy < 0 || cx >= m.width || cy >= m.height) return std::nullopt;
+  const std::int8_t value =
+      m.data[static_cast<std::size_t>(cy) * m.width + static_cast<std::size_t>(cx)];
+  if (value < 0 || value > 100) return std::nullopt;  // unknown (-1), or not a probability
+  return value_log_odds(value);
+}
+
+// When a robot's cells are cells of `g` (same size, no rotation, origins a whole number of cells
+// apart), as for a robot planning on the union of its team's maps with known starts: the offset
+// of its grid in cells of g.
+std::optional<std::array<long, 2>> cell_offset(const GridGeometry& g, const View& v) {
+  const double r = g.resolution_m();
+  const Pose2 T_team_origin = v.T_origin_team.inverse();
+  const double ox = (T_team_origin.x - g.origin().x) / r;
+  const double oy = (T_team_origin.y - g.origin().y) / r;
+  const bool aligned = std::abs(v.map->resolution_m - r) <= 1e-6 * r &&
+                       std::abs(v.sin_theta) <= 1e-9 && v.cos_theta > 0.0 &&
+                       std::abs(ox - std::round(ox)) <= 1e-4 &&
+                       std::abs(oy - std::round(oy)) <= 1e-4;
+  if (!aligned) return std::nullopt;
+  return std::array<long, 2>{std::lround(ox), std::lround(oy)};
+}
+
+// An aligned robot grid: each of its cells is added to its cell of g, O(robot cells).
+void add_cell_for_cell(const GridGeometry& g, const OccupancyGridMessage& m,
+                       std::array<long, 2> offset, Accumulator& acc) {
+  for (long y = 0; y < static_cast<long>(m.height); ++y) {
+    const long ty = y + offset[1];
+    if (ty < 0 || ty >= g.height()) continue;
+    for (long x = 0; x < static_cast<long>(m.width); ++x) {
+      const long tx = x + offset[0];
+      const std::int8_t value =
+          m.data[static_cast<std::size_t>(y) * m.width + static_cast<std::size_t>(x)];
+      if (tx < 0 || tx >= g.width() || value < 0 || value > 100) continue;
+      acc.add(static_cast<std::size_t>(ty) * static_cast<std::size_t>(g.width()) +
+                  static_cast<std::size_t>(tx),
+              value_log_odds(value));
+    }
+  }
+}
+
+// Any other robot grid: its value at a cell of g is the most occupied of its values at n x n
+// points spread evenly over the cell, so an obstacle in any part of the cell keeps it occupied
+// (as World::resampled keeps thin walls), and no point lies on the border of a robot's cell when
+// its grid is aligned with g or half a cell off it (a tie that rounding would break). Only the
+// cells of g under the robot's grid are visited, a row of points at a time: O(those cells x n^2).
+void add_sampled(const GridGeometry& g, const View& v, int n, Accumulator& acc) {
+  const OccupancyGridMessage& m = *v.map;
+  const double r = g.resolution_m();
+  const double inv_r = 1.0 / m.resolution_m;
+  // The robot grid's bounding box in the team frame.
+  const Pose2 T_team_origin = v.T_origin_team.inverse();
+  const double w = m.width * static_cast<double>(m.resolution_m);
+  const double h = m.height * static_cast<double>(m.resolution_m);
+  double bx0 = std::numeric_limits<double>::infinity(), by0 = bx0, bx1 = -bx0, by1 = -bx0;
+  for (const Vec2 corner : {Vec2{0, 0}, Vec2{w, 0}, Vec2{0, h}, Vec2{w, h}}) {
+    const Vec2 p = T_team_origin * corner;
+    bx0 = std::min(bx0, p.x);
+    by0 = std::min(by0, p.y);
+    bx1 = std::max(bx1, p.x);
+    by1 = std::max(by1, p.y);
+  }
+  const int x0 = std::max(0, static_cast<int>(std::floor((bx0 - g.origin().x) / r)) - 1);
+  const int y0 = std::max(0, static_cast<int>(std::floor((by0 - g.origin().y) / r)) - 1);
+  const int x1 =
+      std::min(g.width() - 1, static_cast<int>(std::floor((bx1 - g.origin().x) / r)) + 1);
+  const int y1 =
+      std::min(g.height() - 1, static_cast<int>(std::floor((by1 - g.origin().y) / r)) + 1);
+  if (x0 > x1 || y0 > y1) return;
+  const double c = v.cos_theta, s = v.sin_theta;
+  const Vec2 step{c * r, s * r};  // one cell of g along x, in the robot grid's frame
+  std::vector<float> best(static_cast<std::size_t>(x1 - x0 + 1));
+  std::vector<std::uint8_t> seen(best.size());
+  for (int y = y0; y <= y1; ++y) {
+    std::fill(seen.begin(), seen.end(), 0);
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        const Vec2 p_team{g.origin().x + (x0 + (i + 0.5) / n) * r,
+                          g.origin().y + (y + (j + 0.5) / n) * r};
+        Vec2 p{v.T_origin_team.x + c * p_team.x - s * p_team.y,
+               v.T_origin_team.y + s * p_team.x + c * p_team.y};
+        for (std::size_t k = 0; k < best.size(); ++k, p = p + step) {
+          const std::optional<float> l = value_at(m, inv_r, p.x, p.y);
+          if (!l) continue;
+          best[k] = seen[k] ? std::max(best[k], *l) : *l;
+          seen[k] = 1;
+        }
+      }
+    }
+    for (std::size_t k = 0; k < best.size(); ++k) {
+      if (seen[k]) {
+        acc.add(static_cast<std::size_t>(y) * static_cast<std::size_t>(g.width()) +
+                    static_cast<std::size_t>(x0) + k,
+                best[k]);
       }
     }
   }
-  OccupancyGrid out(g);
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    if (known[i] == 0) continue;
-    const float l = most[i] >= kept_occupied ? std::max(sum[i], most[i]) : sum[i];
-    out.add_log_odds(g.cell_of(i), l, -std::numeric_limits<float>::max(),
-                     std::numeric_limits<float>::max());
-  }
-  return out;
 }
 
 }  // namespace
@@ -145,59 +233,18 @@ OccupancyGrid MapMerger::merged() const {
 }
 
 OccupancyGrid MapMerger::merged(const GridGeometry& g) const {
-  std::vector<View> views;
+  const int n = 2 * std::max(1, static_cast<int>(std::lround(g.resolution_m() / resolution_m_)));
+  Accumulator acc(g);
   for (const auto& [robot, m] : maps_) {
     const Pose2 T = (m.T_team_map * planar_pose(m.map.origin)).inverse();
-    views.push_back({&m.map, T, std::cos(T.theta), std::sin(T.theta)});
-  }
-  // The robots' summed log-odds at a team point (the most occupied one's where a robot holds it
-  // occupied); nullopt where none knows it.
-  const float kept_occupied = log_odds(kKeptOccupied);
-  const auto at = [&](Vec2 p_team) -> std::optional<float> {
-    std::optional<float> sum;
-    float most = -std::numeric_limits<float>::max();
-    for (const View& v : views) {
-      const Vec2 p{v.T_origin_team.x + v.cos_theta * p_team.x - v.sin_theta * p_team.y,
-                   v.T_origin_team.y + v.sin_theta * p_team.x + v.cos_theta * p_team.y};
-      const double r = v.map->resolution_m;
-      const long cx = std::lround(std::floor(p.x / r));
-      const long cy = std::lround(std::floor(p.y / r));
-      if (cx < 0 || cy < 0 || cx >= v.map->width || cy >= v.map->height) continue;
-      const std::int8_t value =
-          v.map->data[static_cast<std::size_t>(cy) * v.map->width + static_cast<std::size_t>(cx)];
-      if (value < 0 || value > 100) continue;  // unknown (-1), or not a probability
-      const float l = value_log_odds(value);
-      sum = sum.value_or(0.0f) + l;
-      most = std::max(most, l);
-    }
-    if (sum && most >= kept_occupied) return std::max(*sum, most);
-    return sum;
-  };
-  if (auto exact = merged_cell_for_cell(g, views, kept_occupied)) return std::move(*exact);
-  // Each cell takes the most occupied of n x n points spread evenly over it, n twice the ratio of
-  // the cell sizes (at least 2): an obstacle in any part of the cell keeps it occupied (as
-  // World::resampled keeps thin walls), and no point lies on the border of a robot's cell when
-  // the robots' grids are aligned with this one or half a cell off it (a tie between two cells
-  // that rounding would break).
-  const int n = 2 * std::max(1, static_cast<int>(std::lround(g.resolution_m() / resolution_m_)));
-  OccupancyGrid out(g);
-  for (int y = 0; y < g.height(); ++y) {
-    for (int x = 0; x < g.width(); ++x) {
-      std::optional<float> cell;
-      for (int j = 0; j < n; ++j) {
-        for (int i = 0; i < n; ++i) {
-          const Vec2 p{g.origin().x + (x + (i + 0.5) / n) * g.resolution_m(),
-                       g.origin().y + (y + (j + 0.5) / n) * g.resolution_m()};
-          if (const std::optional<float> v = at(p)) cell = std::max(cell.value_or(*v), *v);
-        }
-      }
-      if (cell) {
-        out.add_log_odds({x, y}, *cell, -std::numeric_limits<float>::max(),
-                         std::numeric_limits<float>::max());
-      }
+    const View v{&m.map, T, std::cos(T.theta), std::sin(T.theta)};
+    if (const auto offset = cell_offset(g, v)) {
+      add_cell_for_cell(g, m.map, *offset, acc);
+    } else {
+      add_sampled(g, v, n, acc);
     }
   }
-  return out;
+  return acc.grid(log_odds(kKeptOccupied));
 }
 
 }  // namespace tessera::team

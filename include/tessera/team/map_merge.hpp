@@ -42,11 +42,12 @@ class MapMerger {
   /// the team frame. Cost: O(cells of the merged grid x robots).
   [[nodiscard]] OccupancyGrid merged() const;
   /// The same on a grid of the caller's in the team frame, e.g. a truth grid to score against or
-  /// the union extent grown by a margin for planning. When every robot's cells are cells of
-  /// `into` (same size, no rotation, origins whole cells apart: robots planning on their team's
-  /// maps), cell for cell, O(robot cells); otherwise each cell of `into` takes the most occupied
-  /// of the merged values at n x n points spread over it, n twice the ratio of its cell size to
-  /// the team's (at least 2), O(cells of `into` x n^2 x robots).
+  /// the union extent grown by a margin for planning. A robot whose cells are cells of `into`
+  /// (same size, no rotation, origins whole cells apart: robots planning on their team's maps
+  /// with known starts) adds each cell to its cell of `into`, O(its cells); any other robot's
+  /// value at a cell of `into` is its most occupied at n x n points spread over the cell, n
+  /// twice the ratio of the cell sizes (at least 2), O(cells of `into` under its map x n^2).
+  /// The robots' values then combine as above.
   [[nodiscard]] OccupancyGrid merged(const GridGeometry& into) const;
   /// The union of the maps' extents in the team frame as a grid of the team's resolution
   /// (empty geometry without maps), grown by margin_m on every side.

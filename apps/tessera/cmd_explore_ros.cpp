@@ -39,6 +39,22 @@ const char* state_name(std::uint8_t s) {
   }
 }
 
+// Unknown starts: where the robot placed each teammate, and the match that confirmed it.
+nlohmann::json placements_json(const std::vector<nodes::TeammatePlacement>& placements) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const nodes::TeammatePlacement& p : placements) {
+    out.push_back({{"robot", p.robot},
+                   {"x_m", p.T_team_map.x},
+                   {"y_m", p.T_team_map.y},
+                   {"theta_rad", p.T_team_map.theta},
+                   {"at_s", p.at_s},
+                   {"overlap_m2", p.match.overlap_m2},
+                   {"conflict", p.match.conflict},
+                   {"wall_agreement", p.match.wall_agreement}});
+  }
+  return out;
+}
+
 nlohmann::json explorer_json(const nodes::ExplorerNode& node) {
   const nodes::ExplorerNodeStats& s = node.stats();
   const nodes::SlamNodeStats& slam = node.slam_stats();
@@ -58,7 +74,10 @@ nlohmann::json explorer_json(const nodes::ExplorerNode& node) {
           {"scans_added", slam.scans_added},
           {"scans_dropped_invalid", slam.scans_dropped_invalid},
           {"readings_dropped_invalid", slam.readings_dropped_invalid},
-          {"odometry_dropped_invalid", slam.odometry_dropped_invalid}};
+          {"odometry_dropped_invalid", slam.odometry_dropped_invalid},
+          {"map_matches_tried", s.map_matches_tried},
+          {"map_matches_accepted", s.map_matches_accepted},
+          {"placements", placements_json(node.placements())}};
 }
 
 // Messages and bytes per topic through this robot's participant.
@@ -98,6 +117,10 @@ void ExploreCommand::add_ros_options() {
   sub_->add_option("--team-start", team_starts_,
                    "--ros: start pose X,Y[,THETA] of every robot of the team in the team frame, "
                    "once per robot, r1 first (default: this robot alone, its start the origin)");
+  sub_->add_option("--team", team_size_,
+                   "--ros: a team of this many robots r1..rN whose start poses are unknown: "
+                   "each finds its teammates by matching their maps against its own")
+      ->check(CLI::Range(1, 64));
   sub_->add_flag("--exit-when-finished", exit_when_finished_,
                  "--ros: stop once the robot reports it has explored all it can reach");
   add_dds_options(*sub_, domain_, network_);
@@ -107,7 +130,14 @@ int ExploreCommand::run_ros() const {
   if (world_.file) return report_error(usage_error("--ros explores the topics: give no --world"));
   nodes::ExplorerNodeOptions options;
   options.name = ns_.starts_with('/') ? ns_.substr(1) : ns_;
-  if (team_starts_.empty()) {
+  if (team_size_ > 0 && !team_starts_.empty()) {
+    return report_error(usage_error("--team is a team of unknown starts: give no --team-start"));
+  }
+  if (team_size_ > 0) {
+    for (int i = 0; i < team_size_; ++i) {
+      options.team.push_back({nodes::robot_name(i), std::nullopt});
+    }
+  } else if (team_starts_.empty()) {
     options.team.push_back({options.name, Pose2{}});
   } else {
     for (std::size_t i = 0; i < team_starts_.size(); ++i) {
@@ -143,6 +173,7 @@ int ExploreCommand::run_ros() const {
                            {"traffic", traffic_json(**transport)},
                            {"map_latency", latency_json((*node)->map_latencies_s())}};
   report["options"]["team_start"] = team_starts_;
+  report["options"]["team"] = team_size_;
   const double duration_s =
       r.trajectory.empty() ? 0.0 : r.trajectory.back().t_s - r.trajectory.front().t_s;
   report.update(core_report({"explore", std::nullopt, report["options"], wall_s, duration_s}));

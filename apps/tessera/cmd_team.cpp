@@ -48,6 +48,8 @@ TeamCommand::TeamCommand(CLI::App& app) {
   sub_->add_option("--restart-after-s", restart_after_s_,
                    "--kill-robot: start the killed robot again this much simulated time later")
       ->check(CLI::PositiveNumber);
+  sub_->add_flag("--unknown-starts", unknown_starts_,
+                 "Do not tell the robots where they start: they find each other by map matching");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
   add_dds_options(*sub_, domain_, network_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
@@ -77,8 +79,8 @@ int TeamCommand::run() const {
   for (int i = 0; i < robots_; ++i) {
     team.push_back({nodes::robot_name(i), (*starts)[static_cast<std::size_t>(i)]});
   }
-  const TeamLaunch launch =
-      team_launch({world_, resolution_m_, seed_, rate_, domain_, network_}, *starts);
+  const TeamLaunch launch = team_launch(
+      {world_, resolution_m_, seed_, rate_, domain_, network_, unknown_starts_}, *starts);
 
   Result<std::unique_ptr<net::Transport>> transport = open_dds(domain_, network_);
   if (!transport.ok()) return report_error(transport.error());
@@ -190,7 +192,8 @@ int TeamCommand::run() const {
                             {"rate", rate_},
                             {"max_s", max_s_},
                             {"resolution_m", resolution_m_},
-                            {"domain", domain_}};
+                            {"domain", domain_},
+                            {"unknown_starts", unknown_starts_}};
   if (victim >= 0) {
     options["kill_robot"] = *kill_robot_;
     options["at_coverage"] =

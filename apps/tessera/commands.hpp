@@ -57,6 +57,7 @@ class ExploreCommand : public Command {
   bool ros_ = false;
   std::string ns_ = "r1";
   std::vector<std::string> team_starts_;  // "X,Y[,THETA]" per robot, r1 first
+  int team_size_ = 0;                     // --team N: starts unknown
   bool exit_when_finished_ = false;
   std::uint32_t domain_ = 0;
   bool network_ = false;
@@ -291,6 +292,7 @@ class TeamCommand : public Command {
   std::filesystem::path out_ = "out/team";
   std::uint32_t domain_ = 0;
   bool network_ = false;
+  bool unknown_starts_ = false;  // robots find each other by map matching
   bool quiet_ = false;
 };
 

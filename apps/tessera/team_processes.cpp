@@ -35,8 +35,9 @@ TeamLaunch team_launch(const TeamLaunchOptions& o, const std::vector<Pose2>& sta
   l.robot = {"explore", "--ros", "--quiet"};
   for (const Pose2& s : starts) {
     l.sim.insert(l.sim.end(), {"--start", pose_text(s)});
-    l.robot.insert(l.robot.end(), {"--team-start", pose_text(s)});
+    if (!o.starts_unknown) l.robot.insert(l.robot.end(), {"--team-start", pose_text(s)});
   }
+  if (o.starts_unknown) l.robot.insert(l.robot.end(), {"--team", std::to_string(starts.size())});
   for (std::vector<std::string>* args : {&l.sim, &l.robot}) {
     args->insert(args->end(), {"--domain", std::to_string(o.domain)});
     if (o.network) args->push_back("--network");

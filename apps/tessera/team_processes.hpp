@@ -20,6 +20,7 @@ struct TeamLaunchOptions {
   double rate = 1.0;
   std::uint32_t domain = 0;
   bool network = false;
+  bool starts_unknown = false;  // the robots are not told where they start (--team N)
 };
 
 /// Arguments (without the program) of `tessera sim` and of each `tessera explore --ros`.

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "slam_report.hpp"
+#include "tessera/core/angle.hpp"
 #include "tessera/eval/coverage.hpp"
 #include "tessera/eval/map_accuracy.hpp"
 #include "tessera/eval/trajectory_error.hpp"
@@ -11,6 +12,7 @@
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/tum_trajectory.hpp"
+#include "tessera/nodes/sim_node.hpp"
 #include "tessera/render/render.hpp"
 
 namespace tessera::cli {
@@ -47,6 +49,26 @@ nlohmann::json slam_error_json(const nodes::TeamObserverRobot& r) {
 
 // What a robot sent on the team's map topics (its own map and its merged map) and on the claims,
 // per simulated second of the run, and its scan-to-map latency, from its own report.
+// Unknown starts: where robot `i` placed its teammates (its report), each with the error against
+// where the truth puts the teammate's start in the robot's own start frame.
+nlohmann::json placements_json(const nlohmann::json& robot_report, const TeamRunRecord& run,
+                               std::size_t i) {
+  nlohmann::json out = nlohmann::json::array();
+  if (robot_report.is_null() || !robot_report.contains("explorer")) return out;
+  for (const nlohmann::json& p : robot_report["explorer"].value("placements", nlohmann::json())) {
+    nlohmann::json j = p;
+    const std::string robot = p.value("robot", "");
+    for (std::size_t k = 0; k < run.starts.size(); ++k) {
+      if (nodes::robot_name(static_cast<int>(k)) != robot) continue;
+      const Pose2 truth = run.starts[i].inverse() * run.starts[k];
+      j["error_m"] = std::hypot(p.value("x_m", 0.0) - truth.x, p.value("y_m", 0.0) - truth.y);
+      j["error_rad"] = std::abs(normalize_angle(p.value("theta_rad", 0.0) - truth.theta));
+    }
+    out.push_back(j);
+  }
+  return out;
+}
+
 nlohmann::json traffic_json(const nlohmann::json& robot_report, const std::string& name,
                             double sim_s) {
   if (robot_report.is_null() || !robot_report.contains("traffic")) return nullptr;
@@ -108,6 +130,10 @@ Status write_team_outputs(const std::filesystem::path& out, const nodes::TeamObs
                                      ? run.robot_reports[static_cast<std::size_t>(i)]
                                      : nlohmann::json(nullptr),
                                  name, run.sim_s)}};
+    if (i < static_cast<int>(run.robot_reports.size())) {
+      j["placements"] = placements_json(run.robot_reports[static_cast<std::size_t>(i)], run,
+                                        static_cast<std::size_t>(i));
+    }
     if (r.status) {
       j["state"] = r.status->state;
       j["reason"] = r.status->reason;

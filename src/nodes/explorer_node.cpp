@@ -9,6 +9,7 @@
 #include <map>
 #include <string_view>
 
+#include "tessera/core/angle.hpp"
 #include "tessera/io/ros_message_encoders.hpp"
 #include "tessera/io/tf_tree.hpp"
 #include "tessera/net/ros_names.hpp"
@@ -39,12 +40,19 @@ constexpr Qos kTeamReaderQos{Qos::Reliability::kReliable, Qos::Durability::kTran
 std::optional<std::string> validate(const ExplorerNodeOptions& o) {
   if (!net::check_topic_name("/" + o.name).ok()) return "name must be a ROS 2 name, e.g. r1";
   bool found = false;
-  for (const TeamMember& m : o.team) found = found || m.name == o.name;
+  for (const TeamMember& m : o.team) {
+    found = found || m.name == o.name;
+    if (m.T_team_map.has_value() != o.team.front().T_team_map.has_value()) {
+      return "give every robot's start pose or none";
+    }
+  }
   if (!found) return "the team must include this robot (" + o.name + ")";
+  if (auto p = team::validate(o.match)) return "match: " + *p;
+  if (o.match_confirmations < 1) return "match_confirmations must be >= 1";
   if (auto p = team::validate(o.route)) return "route: " + *p;
   if (auto p = validate(o.follower)) return "follower: " + *p;
   for (const double v : {o.plan_period_s, o.team_map_period_wall_s, o.stuck_s, o.finish_after_s,
-                         o.status_period_s}) {
+                         o.status_period_s, o.match_period_s}) {
     if (!(v > 0.0) || !std::isfinite(v)) return "periods and times must be > 0";
   }
   return std::nullopt;
@@ -60,15 +68,27 @@ struct ExplorerNode::State {
     double stamp_s = 0.0;
     bool exploring = false;
   };
+  // A teammate whose start is unknown and that map matching has not placed yet.
+  struct Unplaced {
+    OccupancyGridMessage latest;  // its newest map
+    bool fresh = false;           // not matched since it came
+    std::optional<Pose2> candidate;
+    int agreeing = 0;  // accepted matches in a row that agree with the candidate
+  };
 
   ExplorerNodeOptions options;
   Transport& transport;
   std::unique_ptr<SlamNode> slam;
   ExplorerNodeStats stats;
-  Pose2 T_team_map;           // this robot's map frame (its start) in the team frame
+  Pose2 T_team_map;  // this robot's map frame (its start) in the team frame
+  bool starts_known = true;
   team::MapMerger direct;     // this robot's and its teammates' own maps
   team::MapMerger team_maps;  // teammates' merged maps: cells no live map knows
-  std::map<std::string, Pose2> T_team_teammate;
+  std::map<std::string, std::optional<Pose2>> T_team_teammate;  // nullopt: not placed yet
+  std::map<std::string, Unplaced> unplaced;
+  std::vector<TeammatePlacement> placements;
+  std::string last_matched;
+  double last_match_s = -1e9;
   std::map<std::string, Claim> claims;
   std::map<std::string, Teammate> teammates;
   std::uint64_t merged_inputs = 0, planned_inputs = ~0ULL, own_map_revision = 0;
@@ -97,12 +117,14 @@ struct ExplorerNode::State {
         team_maps(o.slam.slam.map_resolution_m) {}
 
   Status connect() {
+    starts_known = options.team.front().T_team_map.has_value();
     for (const TeamMember& m : options.team) {
       if (m.name == options.name) {
-        T_team_map = m.T_team_map;
+        T_team_map = m.T_team_map.value_or(Pose2{});
         continue;
       }
       T_team_teammate[m.name] = m.T_team_map;
+      if (!starts_known) unplaced[m.name];
       Result<Transport::ReaderId> r =
           transport.subscribe({"/" + m.name + "/map", std::string(kRos2OccupancyGrid), Qos::map()},
                               [this, name = m.name](auto cdr) { on_teammate_map(name, cdr); });
@@ -135,14 +157,77 @@ struct ExplorerNode::State {
     return Ok{};
   }
 
+  // Where a teammate's team frame lies in ours: the same frame when the starts are known; its
+  // map frame, once placed, when they are not. nullopt: not placed (or not of the team).
+  [[nodiscard]] std::optional<Pose2> T_team_their_team(const std::string& robot) const {
+    if (starts_known) return Pose2{};
+    const auto it = T_team_teammate.find(robot);
+    return it == T_team_teammate.end() ? std::nullopt : it->second;
+  }
+
   void on_teammate_map(const std::string& name, std::span<const std::uint8_t> cdr) {
     Result<OccupancyGridMessage> m = decode_cdr_occupancy_grid(cdr);
-    if (!m.ok() || !direct.update(name, *m, T_team_teammate.at(name)).ok()) {
+    if (!m.ok()) {
+      ++stats.teammate_maps_dropped;
+      return;
+    }
+    if (const std::optional<Pose2>& T = T_team_teammate.at(name); !T) {
+      // Checked now as the merge would check it, kept for the next match.
+      if (team::MapMerger check(options.slam.slam.map_resolution_m);
+          !check.update(name, *m, Pose2{}).ok()) {
+        ++stats.teammate_maps_dropped;
+        return;
+      }
+      Unplaced& u = unplaced.at(name);
+      u.latest = std::move(*m);
+      u.fresh = true;
+    } else if (!direct.update(name, *m, *T).ok()) {
       ++stats.teammate_maps_dropped;
       return;
     }
     ++stats.teammate_maps_received;
     ++merged_inputs;
+  }
+
+  // Unknown start poses: matches the newest map of one unplaced teammate (in turn) against the
+  // team map, and places the teammate once match_confirmations accepted matches agree.
+  void place_teammates() {
+    if (starts_known || unplaced.empty() || team_map.geometry().size() == 0) return;
+    if (now_s - last_match_s < options.match_period_s) return;
+    auto it = unplaced.upper_bound(last_matched);
+    for (std::size_t n = 0; n < unplaced.size(); ++n, ++it) {
+      if (it == unplaced.end()) it = unplaced.begin();
+      if (it->second.fresh) break;
+    }
+    if (it == unplaced.end() || !it->second.fresh) return;
+    last_match_s = now_s;
+    last_matched = it->first;
+    Unplaced& u = it->second;
+    u.fresh = false;
+    team::MapMerger as_grid(options.slam.slam.map_resolution_m);
+    (void)as_grid.update(it->first, u.latest, Pose2{});  // checked when it came
+    ++stats.map_matches_tried;
+    Result<std::optional<team::MapMatch>> m =
+        team::match_maps(team_map, as_grid.merged(), options.match);
+    if (!m.ok() || !m->has_value() || !(*m)->accepted) {
+      u.candidate.reset();
+      u.agreeing = 0;
+      return;
+    }
+    ++stats.map_matches_accepted;
+    const Pose2 T = (*m)->T_fixed_moving;
+    const bool agrees =
+        u.candidate &&
+        std::hypot(T.x - u.candidate->x, T.y - u.candidate->y) <= kPlacementAgreement_m &&
+        std::abs(normalize_angle(T.theta - u.candidate->theta)) <= kPlacementAgreement_rad;
+    u.agreeing = agrees ? u.agreeing + 1 : 1;
+    u.candidate = T;
+    if (u.agreeing < options.match_confirmations) return;
+    placements.push_back({it->first, T, now_s, **m});
+    T_team_teammate[it->first] = T;
+    (void)direct.update(it->first, u.latest, T);  // checked when it came
+    ++merged_inputs;
+    unplaced.erase(it);
   }
 
   void on_team_map(std::span<const std::uint8_t> cdr) {
@@ -157,7 +242,9 @@ struct ExplorerNode::State {
     const std::string robot(
         frame.ends_with(kSuffix) ? frame.substr(0, frame.size() - kSuffix.size()) : frame);
     if (robot == options.name) return;
-    if (!team_maps.update(robot, *m, Pose2{}).ok()) {
+    const std::optional<Pose2> T = T_team_their_team(robot);
+    if (!T) return;  // not placed yet: it comes again
+    if (!team_maps.update(robot, *m, *T).ok()) {
       ++stats.teammate_maps_dropped;
       return;
     }
@@ -171,15 +258,18 @@ struct ExplorerNode::State {
       ++stats.claims_dropped;
       return;
     }
-    if (m->robot_id == options.name) return;
+    const std::optional<Pose2> T = T_team_their_team(m->robot_id);
+    if (m->robot_id == options.name || !T) return;
     ++stats.claims_received;
-    claims[m->robot_id] = {{m->target.x_m, m->target.y_m}, m->active};
+    claims[m->robot_id] = {*T * Vec2{m->target.x_m, m->target.y_m}, m->active};
   }
 
   void on_status(std::span<const std::uint8_t> cdr) {
     Result<RobotStatusMessage> m = decode_cdr_robot_status(cdr);
     if (!m.ok() || m->robot_id == options.name || !T_team_teammate.contains(m->robot_id)) return;
-    const Pose2 p = planar_pose(m->pose);
+    const std::optional<Pose2> T = T_team_their_team(m->robot_id);
+    if (!T) return;
+    const Pose2 p = *T * planar_pose(m->pose);
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
     teammates[m->robot_id] = {
         {p.x, p.y},
@@ -449,6 +539,8 @@ struct ExplorerNode::State {
     if (T_team_robot && now_s - last_plan_s >= options.plan_period_s) {
       last_plan_s = now_s;
       merge();
+      place_teammates();
+      merge();
       if (Status s = plan(*T_team_robot); !s.ok()) return s;
     }
     if (wall - last_team_map >= std::chrono::duration<double>(options.team_map_period_wall_s)) {
@@ -497,6 +589,9 @@ const std::string& ExplorerNode::reason() const { return state_->reason; }
 const OccupancyGrid& ExplorerNode::team_map() const { return state_->team_map; }
 std::optional<Pose2> ExplorerNode::pose() const { return state_->pose(); }
 const ExplorerNodeStats& ExplorerNode::stats() const { return state_->stats; }
+const std::vector<TeammatePlacement>& ExplorerNode::placements() const {
+  return state_->placements;
+}
 const SlamNodeStats& ExplorerNode::slam_stats() const { return state_->slam->stats(); }
 const std::vector<double>& ExplorerNode::map_latencies_s() const {
   return state_->slam->map_latencies_s();

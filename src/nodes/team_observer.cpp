@@ -33,7 +33,8 @@ struct TeamObserver::State {
     };
     for (const TeamMember& m : team) {
       robots[m.name];
-      T_team_map[m.name] = m.T_team_map;
+      if (!m.T_team_map) return usage_error("team observer: the start pose of " + m.name);
+      T_team_map[m.name] = *m.T_team_map;
       const std::string ns = "/" + m.name;
       for (Status s : {sub(ns + "/map", kRos2OccupancyGrid, Qos::map(),
                            [this, n = m.name](auto c) { on_map(n, c); }),

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "support/text_world.hpp"
+#include "tessera/core/angle.hpp"
 #include "tessera/eval/coverage.hpp"
 #include "tessera/eval/map_accuracy.hpp"
 #include "tessera/eval/truth_grid.hpp"
@@ -38,13 +39,15 @@ struct TeamRun {
   std::vector<std::string> reasons;
   std::optional<OccupancyGridMessage> killed_map;  // the killed robot's last map
   std::vector<OccupancyGrid> team_maps;            // each surviving robot's team map at the end
-  double largest_team_map_m2 = 0.0;                // of the /team/map messages
+  std::vector<std::vector<TeammatePlacement>> placements;  // each surviving robot's
+  double largest_team_map_m2 = 0.0;                        // of the /team/map messages
 };
 
 // The simulator, the robots and an observer on one in-process bus, stepped in turn until every
-// robot has finished or max_s of simulated time.
-TeamRun run_team(const World& world, const std::vector<Pose2>& starts, double max_s,
-                 Kill kill = {}) {
+// robot has finished or max_s of simulated time. The robots are told the start poses unless
+// `starts_unknown` (the observer always knows them).
+TeamRun run_team(const World& world, const std::vector<Pose2>& starts, double max_s, Kill kill = {},
+                 bool starts_unknown = false) {
   net::InProcessBus bus;
   auto sim_t = bus.join();
   SimNodeOptions sim_options;
@@ -62,6 +65,9 @@ TeamRun run_team(const World& world, const std::vector<Pose2>& starts, double ma
     ExplorerNodeOptions o;
     o.name = m.name;
     o.team = team;
+    if (starts_unknown) {
+      for (TeamMember& member : o.team) member.T_team_map.reset();
+    }
     auto node = ExplorerNode::create(o, *robot_t.back());
     EXPECT_TRUE(node.ok()) << node.error().message;
     robots.push_back(std::move(*node));
@@ -113,6 +119,7 @@ TeamRun run_team(const World& world, const std::vector<Pose2>& starts, double ma
     run.states.push_back(r->state());
     run.reasons.push_back(r->reason());
     run.team_maps.push_back(r->team_map());
+    run.placements.push_back(r->placements());
     EXPECT_TRUE(r->finish().ok());
   }
   (*observer)->spin_once();
@@ -142,6 +149,30 @@ TEST(ExplorerNode, TwoRobotsExploreTheOfficeByTheirOwnSlam) {
   for (std::size_t i = 0; i < run.states.size(); ++i) {
     EXPECT_EQ(run.states[i], RobotStatusMessage::kFinished) << i;
     EXPECT_EQ(run.reasons[i], "no reachable frontier") << i;
+  }
+}
+
+// Robots that are not told where the others started find them by matching their maps against
+// their own, and explore as a team once they have.
+TEST(ExplorerNode, RobotsThatDoNotKnowTheStartsPlaceEachOtherByMapMatching) {
+  const World world = builtin_world("office", 0.05);
+  const std::vector<Pose2> starts{{8.025, 7.025, 0.0}, {8.625, 7.025, 2.5}};
+  const TeamRun run = run_team(world, starts, 300.0, {}, true);
+  EXPECT_GE(run.coverage, 0.99);
+  EXPECT_LT(run.occupied_shown_free, 0.005);
+  ASSERT_EQ(run.placements.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(run.reasons[i], "no reachable frontier") << i;
+    ASSERT_EQ(run.placements[i].size(), 1u) << "robot " << i << " placed no teammate";
+    const TeammatePlacement& p = run.placements[i][0];
+    const Pose2 truth = starts[i].inverse() * starts[1 - i];
+    std::printf("r%zu placed %s at %.1f s: error %.3f m, %.4f rad (overlap %.1f m2)\n", i + 1,
+                p.robot.c_str(), p.at_s,
+                std::hypot(p.T_team_map.x - truth.x, p.T_team_map.y - truth.y),
+                normalize_angle(p.T_team_map.theta - truth.theta), p.match.overlap_m2);
+    EXPECT_EQ(p.robot, robot_name(static_cast<int>(1 - i)));
+    EXPECT_LT(std::hypot(p.T_team_map.x - truth.x, p.T_team_map.y - truth.y), 0.1);
+    EXPECT_LT(std::abs(normalize_angle(p.T_team_map.theta - truth.theta)), 0.02);
   }
 }
 

@@ -11,9 +11,12 @@
 //              map of one that died); /team/claims tessera_msgs/FrontierClaim in and out;
 //              /team/status tessera_msgs/RobotStatus out (state, stop reason, pose, counters);
 //              /team/command tessera_msgs/TeamCommand in (start, stop, return home)
-// The team frame: each robot's map frame is its start pose in it (known start poses, given to
-// every robot). Messages that do not decode, a teammate's map of another resolution and claims
-// that are not finite are dropped and counted (stats, and RobotStatus::messages_dropped).
+// The team frame. Known start poses (given to every robot): the frame they are given in, each
+// robot's map frame at its start. Unknown start poses: each robot's own map frame; a teammate's
+// map, and with it its claims, position and team map, is used once map matching has placed it
+// (team/map_match.hpp): an accepted match, confirmed by the next ones on the growing maps.
+// Messages that do not decode, a teammate's map of another resolution and claims that are not
+// finite are dropped and counted (stats, and RobotStatus::messages_dropped).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -27,6 +30,7 @@
 #include "tessera/net/transport.hpp"
 #include "tessera/nodes/slam_node.hpp"
 #include "tessera/team/frontier_route.hpp"
+#include "tessera/team/map_match.hpp"
 
 namespace tessera::nodes {
 
@@ -36,10 +40,20 @@ inline constexpr const char* kReasonStoppedByCommand = "stopped by command";
 inline constexpr const char* kReasonAtHome = "at home";
 inline constexpr const char* kReasonShutDown = "shut down";
 
-/// A robot of the team and where its map frame (its start pose) is in the team frame.
+/// A robot of the team and where its map frame (its start pose) is in the team frame; nullopt
+/// when it is not known (then for every robot of the team: the robots find each other by map
+/// matching).
 struct TeamMember {
   std::string name;  // "r1": namespace /r1
-  Pose2 T_team_map;
+  std::optional<Pose2> T_team_map;
+};
+
+/// Where a robot placed a teammate whose start it did not know.
+struct TeammatePlacement {
+  std::string robot;
+  Pose2 T_team_map;      // the teammate's map frame in this robot's team frame
+  double at_s = 0.0;     // robot time
+  team::MapMatch match;  // the match that confirmed it
 };
 
 struct ExplorerNodeOptions {
@@ -74,7 +88,19 @@ struct ExplorerNodeOptions {
   double finish_after_s = 4.0;
   /// Robot time between RobotStatus messages.
   double status_period_s = 1.0;
+  /// Unknown start poses: a teammate's map is matched against the team map at most this often
+  /// (robot time, one teammate per attempt) while it is not placed ...
+  double match_period_s = 1.0;
+  team::MapMatchOptions match;
+  /// ... and placed when this many accepted matches in a row agree within
+  /// kPlacementAgreement_m and kPlacementAgreement_rad.
+  int match_confirmations = 2;
 };
+
+/// How far successive matches of one teammate's map may differ and still confirm each other:
+/// the maps grow and their SLAM corrects them between matches.
+inline constexpr double kPlacementAgreement_m = 0.15;
+inline constexpr double kPlacementAgreement_rad = 0.05;
 
 /// Empty when usable; otherwise names the field and the rule it breaks.
 [[nodiscard]] std::optional<std::string> validate(const ExplorerNodeOptions& o);
@@ -90,6 +116,8 @@ struct ExplorerNodeStats {
   std::uint64_t routes_planned = 0;
   std::uint64_t targets_given_up = 0;  // stuck, or still a frontier once reached
   std::uint64_t team_maps_published = 0;
+  std::uint64_t map_matches_tried = 0;  // unknown starts: matches of teammates' maps
+  std::uint64_t map_matches_accepted = 0;
 };
 
 class ExplorerNode {
@@ -119,6 +147,8 @@ class ExplorerNode {
   /// T_team_robot from SLAM and odometry; nullopt before the first scan is mapped.
   [[nodiscard]] std::optional<Pose2> pose() const;
   [[nodiscard]] const ExplorerNodeStats& stats() const;
+  /// Unknown start poses: the teammates placed so far, in the order they were placed.
+  [[nodiscard]] const std::vector<TeammatePlacement>& placements() const;
   [[nodiscard]] const SlamNodeStats& slam_stats() const;
   /// SlamNode::map_latencies_s of the robot's SLAM.
   [[nodiscard]] const std::vector<double>& map_latencies_s() const;

@@ -33,7 +33,8 @@ struct TeamObserverRobot {
 
 class TeamObserver {
  public:
-  /// `team`: each robot and its map frame in the team (= world) frame. `transport` must outlive
+  /// `team`: each robot and its map frame in the team (= world) frame, which the evaluator knows
+  /// even when the robots do not (kUsage error for a robot without it). `transport` must outlive
   /// the observer.
   [[nodiscard]] static Result<std::unique_ptr<TeamObserver>> create(
       const std::vector<TeamMember>& team, double resolution_m, net::Transport& transport);

@@ -52,6 +52,7 @@ test-ci: deps
 
 bench: build
 	build/dev/bench/explore/explore_bench
+	build/dev/bench/team/map_match_bench
 
 # Issue 12's real-log SLAM table: 4 dev logs x seeds 1-3 x drift 0.15 and 0.3 deg/m, scored by the
 # shared ATE tool; prints the Markdown table of docs/slam-results.md and copies the maps.

@@ -34,6 +34,12 @@ Status Transport::advertise(const TopicSpec& topic, WriterId& into) {
   return Ok{};
 }
 
+Status Transport::listen(const TopicSpec& topic, Handler handler) {
+  Result<ReaderId> id = subscribe(topic, std::move(handler));
+  if (!id.ok()) return id.error();
+  return Ok{};
+}
+
 Status Transport::publish(WriterId writer, std::span<const std::uint8_t> cdr) {
   const auto topic = writer_topics_.find(writer);
   if (topic == writer_topics_.end()) {

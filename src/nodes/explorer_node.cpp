@@ -87,7 +87,6 @@ struct ExplorerNode::State {
   std::map<std::string, std::optional<Pose2>> T_team_teammate;  // nullopt: not placed yet
   std::map<std::string, Unplaced> unplaced;
   std::vector<TeammatePlacement> placements;
-  std::string last_matched;
   double last_match_s = -1e9;
   std::map<std::string, Claim> claims;
   std::map<std::string, Teammate> teammates;
@@ -125,10 +124,12 @@ struct ExplorerNode::State {
       }
       T_team_teammate[m.name] = m.T_team_map;
       if (!starts_known) unplaced[m.name];
-      Result<Transport::ReaderId> r =
-          transport.subscribe({"/" + m.name + "/map", std::string(kRos2OccupancyGrid), Qos::map()},
-                              [this, name = m.name](auto cdr) { on_teammate_map(name, cdr); });
-      if (!r.ok()) return r.error();
+      if (Status s =
+              transport.listen({"/" + m.name + "/map", std::string(kRos2OccupancyGrid), Qos::map()},
+                               [this, name = m.name](auto cdr) { on_teammate_map(name, cdr); });
+          !s.ok()) {
+        return s;
+      }
     }
     const std::string ns = "/" + options.name;
     for (Status s : {transport.advertise(
@@ -141,17 +142,15 @@ struct ExplorerNode::State {
                                          team_map_writer)}) {
       if (!s.ok()) return s;
     }
-    const auto sub = [&](const char* topic, std::string_view type, const Qos& qos,
-                         Transport::Handler h) -> Status {
-      Result<Transport::ReaderId> r = transport.subscribe({topic, std::string(type), qos}, h);
-      return r.ok() ? Status(Ok{}) : Status(r.error());
-    };
     for (Status s :
-         {sub("/team/claims", kRos2FrontierClaim, kTeamReaderQos, [this](auto c) { on_claim(c); }),
-          sub("/team/map", kRos2OccupancyGrid, kTeamReaderQos, [this](auto c) { on_team_map(c); }),
-          sub("/team/status", kRos2RobotStatus, kTeamReaderQos, [this](auto c) { on_status(c); }),
-          sub("/team/command", kRos2TeamCommand, Qos::reliable(10),
-              [this](auto c) { on_command(c); })}) {
+         {transport.listen({"/team/claims", std::string(kRos2FrontierClaim), kTeamReaderQos},
+                           [this](auto c) { on_claim(c); }),
+          transport.listen({"/team/map", std::string(kRos2OccupancyGrid), kTeamReaderQos},
+                           [this](auto c) { on_team_map(c); }),
+          transport.listen({"/team/status", std::string(kRos2RobotStatus), kTeamReaderQos},
+                           [this](auto c) { on_status(c); }),
+          transport.listen({"/team/command", std::string(kRos2TeamCommand), Qos::reliable(10)},
+                           [this](auto c) { on_command(c); })}) {
       if (!s.ok()) return s;
     }
     return Ok{};
@@ -189,20 +188,22 @@ struct ExplorerNode::State {
     ++merged_inputs;
   }
 
-  // Unknown start poses: matches the newest map of one unplaced teammate (in turn) against the
-  // team map, and places the teammate once match_confirmations accepted matches agree.
+  // Unknown start poses: matches the newest map of each unplaced teammate against the team map,
+  // and places a teammate once match_confirmations accepted matches in a row agree.
   void place_teammates() {
     if (starts_known || unplaced.empty() || team_map.geometry().size() == 0) return;
     if (now_s - last_match_s < options.match_period_s) return;
-    auto it = unplaced.upper_bound(last_matched);
-    for (std::size_t n = 0; n < unplaced.size(); ++n, ++it) {
-      if (it == unplaced.end()) it = unplaced.begin();
-      if (it->second.fresh) break;
-    }
-    if (it == unplaced.end() || !it->second.fresh) return;
     last_match_s = now_s;
-    last_matched = it->first;
+    for (auto it = unplaced.begin(); it != unplaced.end();) {
+      it = try_to_place(it);
+    }
+  }
+
+  // The next unplaced teammate after `it`.
+  std::map<std::string, Unplaced>::iterator try_to_place(
+      std::map<std::string, Unplaced>::iterator it) {
     Unplaced& u = it->second;
+    if (!u.fresh) return std::next(it);
     u.fresh = false;
     team::MapMerger as_grid(options.slam.slam.map_resolution_m);
     (void)as_grid.update(it->first, u.latest, Pose2{});  // checked when it came
@@ -212,7 +213,7 @@ struct ExplorerNode::State {
     if (!m.ok() || !m->has_value() || !(*m)->accepted) {
       u.candidate.reset();
       u.agreeing = 0;
-      return;
+      return std::next(it);
     }
     ++stats.map_matches_accepted;
     const Pose2 T = (*m)->T_fixed_moving;
@@ -222,12 +223,12 @@ struct ExplorerNode::State {
         std::abs(normalize_angle(T.theta - u.candidate->theta)) <= kPlacementAgreement_rad;
     u.agreeing = agrees ? u.agreeing + 1 : 1;
     u.candidate = T;
-    if (u.agreeing < options.match_confirmations) return;
+    if (u.agreeing < options.match_confirmations) return std::next(it);
     placements.push_back({it->first, T, now_s, **m});
     T_team_teammate[it->first] = T;
     (void)direct.update(it->first, u.latest, T);  // checked when it came
     ++merged_inputs;
-    unplaced.erase(it);
+    return unplaced.erase(it);
   }
 
   void on_team_map(std::span<const std::uint8_t> cdr) {

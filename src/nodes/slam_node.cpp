@@ -76,26 +76,23 @@ struct SlamNode::State {
     // Best effort matches any driver's publisher; the deep queue holds what SLAM has not read.
     const Qos sensors{Qos::Reliability::kBestEffort, Qos::Durability::kVolatile,
                       options.queue_depth};
-    auto sub = [&](const std::string& topic, std::string_view type, const Qos& qos,
-                   Transport::Handler h) -> Status {
-      Result<Transport::ReaderId> r = transport.subscribe({topic, std::string(type), qos}, h);
-      if (!r.ok()) return r.error();
-      return Ok{};
-    };
-    if (Status s = sub(*scan_topic, kRos2LaserScan, sensors, [this](auto cdr) { on_scan(cdr); });
+    if (Status s = transport.listen({*scan_topic, std::string(kRos2LaserScan), sensors},
+                                    [this](auto cdr) { on_scan(cdr); });
         !s.ok()) {
       return s;
     }
-    if (Status s = sub(odom_topic, kRos2Odometry, sensors, [this](auto cdr) { on_odom(cdr); });
+    if (Status s = transport.listen({odom_topic, std::string(kRos2Odometry), sensors},
+                                    [this](auto cdr) { on_odom(cdr); });
         !s.ok()) {
       return s;
     }
-    if (Status s = sub("/tf_static", kRos2TfMessage, Qos::tf_static(),
-                       [this](auto cdr) { on_tf(cdr, true); });
+    if (Status s = transport.listen({"/tf_static", std::string(kRos2TfMessage), Qos::tf_static()},
+                                    [this](auto cdr) { on_tf(cdr, true); });
         !s.ok()) {
       return s;
     }
-    if (Status s = sub("/tf", kRos2TfMessage, Qos::tf(), [this](auto cdr) { on_tf(cdr, false); });
+    if (Status s = transport.listen({"/tf", std::string(kRos2TfMessage), Qos::tf()},
+                                    [this](auto cdr) { on_tf(cdr, false); });
         !s.ok()) {
       return s;
     }

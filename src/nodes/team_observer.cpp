@@ -26,32 +26,29 @@ struct TeamObserver::State {
   State(net::Transport& t, double resolution_m) : transport(t), merger(resolution_m) {}
 
   Status connect(const std::vector<TeamMember>& team) {
-    const auto sub = [&](const std::string& topic, std::string_view type, const Qos& qos,
-                         net::Transport::Handler h) -> Status {
-      Result<net::Transport::ReaderId> r = transport.subscribe({topic, std::string(type), qos}, h);
-      return r.ok() ? Status(Ok{}) : Status(r.error());
-    };
     for (const TeamMember& m : team) {
       robots[m.name];
       if (!m.T_team_map) return usage_error("team observer: the start pose of " + m.name);
       T_team_map[m.name] = *m.T_team_map;
       const std::string ns = "/" + m.name;
-      for (Status s : {sub(ns + "/map", kRos2OccupancyGrid, Qos::map(),
-                           [this, n = m.name](auto c) { on_map(n, c); }),
-                       sub(ns + "/pose", kRos2PoseWithCovarianceStamped, Qos::reliable(100),
-                           [this, n = m.name](auto c) { on_pose(n, c); }),
-                       sub("/sim" + ns + "/ground_truth", kRos2Odometry, Qos::reliable(100),
-                           [this, n = m.name](auto c) { on_truth(n, c); })}) {
+      for (Status s : {transport.listen({ns + "/map", std::string(kRos2OccupancyGrid), Qos::map()},
+                                        [this, n = m.name](auto c) { on_map(n, c); }),
+                       transport.listen({ns + "/pose", std::string(kRos2PoseWithCovarianceStamped),
+                                         Qos::reliable(100)},
+                                        [this, n = m.name](auto c) { on_pose(n, c); }),
+                       transport.listen({"/sim" + ns + "/ground_truth", std::string(kRos2Odometry),
+                                         Qos::reliable(100)},
+                                        [this, n = m.name](auto c) { on_truth(n, c); })}) {
         if (!s.ok()) return s;
       }
     }
     const Qos status_qos{Qos::Reliability::kReliable, Qos::Durability::kTransientLocal, 64};
-    if (Status s =
-            sub("/team/status", kRos2RobotStatus, status_qos, [this](auto c) { on_status(c); });
+    if (Status s = transport.listen({"/team/status", std::string(kRos2RobotStatus), status_qos},
+                                    [this](auto c) { on_status(c); });
         !s.ok()) {
       return s;
     }
-    return sub("/clock", kRos2Clock, Qos::clock(), [this](auto c) {
+    return transport.listen({"/clock", std::string(kRos2Clock), Qos::clock()}, [this](auto c) {
       if (Result<ClockMessage> m = decode_cdr_clock(c); m.ok()) sim_time_s = seconds(m->clock_ns);
     });
   }

@@ -57,6 +57,8 @@ class Transport {
   [[nodiscard]] Status publish(WriterId writer, std::span<const std::uint8_t> cdr);
   /// A reader on `topic`; `handler` runs in poll() for each message received.
   [[nodiscard]] Result<ReaderId> subscribe(const TopicSpec& topic, Handler handler);
+  /// The same for a node that never needs the reader's id: it only listens.
+  [[nodiscard]] Status listen(const TopicSpec& topic, Handler handler);
   /// Runs the handlers of every message received so far, oldest first per reader, readers in the
   /// order they were created; returns how many messages it delivered.
   std::size_t poll();

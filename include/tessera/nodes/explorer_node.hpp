@@ -88,8 +88,8 @@ struct ExplorerNodeOptions {
   double finish_after_s = 4.0;
   /// Robot time between RobotStatus messages.
   double status_period_s = 1.0;
-  /// Unknown start poses: a teammate's map is matched against the team map at most this often
-  /// (robot time, one teammate per attempt) while it is not placed ...
+  /// Unknown start poses: each teammate's newest map is matched against the team map at most
+  /// this often (robot time) while the teammate is not placed ...
   double match_period_s = 1.0;
   team::MapMatchOptions match;
   /// ... and placed when this many accepted matches in a row agree within

@@ -56,8 +56,8 @@ struct MapMatch {
 /// Matches `moving` (a teammate's map in its own frame) against `fixed` (ours). nullopt when
 /// either map has no obstacle cell or no pose scores above chance. kInput error when the
 /// resolutions differ or the options are invalid. Cost: dominated by the search, about
-/// O(turn steps x points x coarse cells / 4^depth) plus the branches it cannot prune; tens of
-/// milliseconds for two 20 m maps on this project's machine (docs/ros2.md).
+/// O(turn steps x points x coarse cells / 4^depth) plus the branches it cannot prune; 21 ms for
+/// two robots' 15 x 10 m maps on this project's machine (docs/benchmarks.md).
 [[nodiscard]] Result<std::optional<MapMatch>> match_maps(const OccupancyGrid& fixed,
                                                          const OccupancyGrid& moving,
                                                          const MapMatchOptions& options = {});

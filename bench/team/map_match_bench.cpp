@@ -5,7 +5,6 @@
 // cut to their known cells (about 15 x 10 m, 0.05 m cells), as SLAM publishes them.
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <vector>
 
 #include "tessera/core/rng.hpp"
@@ -18,29 +17,6 @@
 
 namespace tessera {
 namespace {
-
-// The map cut to its known cells, as a robot's SLAM publishes it.
-OccupancyGrid known_part(const OccupancyGrid& map) {
-  const GridGeometry& g = map.geometry();
-  int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    const Cell c = g.cell_of(i);
-    if (!map.known(c)) continue;
-    x0 = std::min(x0, c.x);
-    y0 = std::min(y0, c.y);
-    x1 = std::max(x1, c.x);
-    y1 = std::max(y1, c.y);
-  }
-  const double r = g.resolution_m();
-  OccupancyGrid out(
-      GridGeometry({g.origin().x + x0 * r, g.origin().y + y0 * r}, r, x1 - x0 + 1, y1 - y0 + 1));
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      if (map.known({x, y})) out.set_probability({x - x0, y - y0}, *map.probability_at({x, y}));
-    }
-  }
-  return out;
-}
 
 OccupancyGrid seen_map(const World& world, const Pose2& T_world_start,
                        const std::vector<Pose2>& poses_world, std::uint64_t seed) {

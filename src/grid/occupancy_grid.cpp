@@ -1,6 +1,7 @@
 #include "tessera/grid/occupancy_grid.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace tessera {
@@ -53,6 +54,33 @@ CellCounts OccupancyGrid::count_states(double occupied_threshold) const {
     }
   }
   return counts;
+}
+
+OccupancyGrid known_part(const OccupancyGrid& map) {
+  const GridGeometry& g = map.geometry();
+  int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      if (!map.known({x, y})) continue;
+      x0 = std::min(x0, x);
+      y0 = std::min(y0, y);
+      x1 = std::max(x1, x);
+      y1 = std::max(y1, y);
+    }
+  }
+  if (x1 < 0) return OccupancyGrid{};
+  const double r = g.resolution_m();
+  OccupancyGrid out(
+      GridGeometry({g.origin().x + x0 * r, g.origin().y + y0 * r}, r, x1 - x0 + 1, y1 - y0 + 1));
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      if (map.known({x, y})) {
+        out.add_log_odds({x - x0, y - y0}, map.log_odds_at({x, y}),
+                         -std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace tessera

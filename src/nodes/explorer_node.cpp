@@ -199,7 +199,8 @@ struct ExplorerNode::State {
     }
   }
 
-  // The next unplaced teammate after `it`.
+  // Matches the teammate at `it` if its map is new, and places it when the matches confirm;
+  // returns the unplaced teammate after it.
   std::map<std::string, Unplaced>::iterator try_to_place(
       std::map<std::string, Unplaced>::iterator it) {
     Unplaced& u = it->second;
@@ -502,29 +503,8 @@ struct ExplorerNode::State {
   // travel between robots never grow by it on each round trip.
   Status publish_team_map() {
     last_team_map = SteadyClock::now();
-    const GridGeometry& g = team_map.geometry();
-    int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
-    for (int y = 0; y < g.height(); ++y) {
-      for (int x = 0; x < g.width(); ++x) {
-        if (!team_map.known({x, y})) continue;
-        x0 = std::min(x0, x);
-        y0 = std::min(y0, y);
-        x1 = std::max(x1, x);
-        y1 = std::max(y1, y);
-      }
-    }
-    if (x1 < 0) return Ok{};
-    const double r = g.resolution_m();
-    OccupancyGrid known(
-        GridGeometry({g.origin().x + x0 * r, g.origin().y + y0 * r}, r, x1 - x0 + 1, y1 - y0 + 1));
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        if (team_map.known({x, y})) {
-          known.add_log_odds({x - x0, y - y0}, team_map.log_odds_at({x, y}),
-                             -std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
-        }
-      }
-    }
+    const OccupancyGrid known = known_part(team_map);
+    if (known.geometry().size() == 0) return Ok{};
     ++stats.team_maps_published;
     return transport.publish(team_map_writer,
                              encode_cdr(occupancy_grid_message(known, std::llround(now_s * 1e9),

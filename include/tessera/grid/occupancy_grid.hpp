@@ -101,4 +101,9 @@ class OccupancyGrid {
   std::vector<std::uint8_t> known_;
 };
 
+/// The smallest part of `map` that holds every known cell, cells where they were in space (a
+/// robot's map cut to what it knows before it is sent); an empty grid when nothing is known.
+/// Cost: O(cells).
+[[nodiscard]] OccupancyGrid known_part(const OccupancyGrid& map);
+
 }  // namespace tessera

@@ -119,8 +119,10 @@ void ExploreCommand::add_ros_options() {
                    "once per robot, r1 first (default: this robot alone, its start the origin)");
   sub_->add_option("--team", team_size_,
                    "--ros: a team of this many robots r1..rN whose start poses are unknown: "
-                   "each finds its teammates by matching their maps against its own")
-      ->check(CLI::Range(1, 64));
+                   "each finds its teammates by matching their maps against its own (0: the "
+                   "starts are given by --team-start, or the robot is alone)")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
   sub_->add_flag("--exit-when-finished", exit_when_finished_,
                  "--ros: stop once the robot reports it has explored all it can reach");
   add_dds_options(*sub_, domain_, network_);

@@ -6,16 +6,18 @@
 #include "commands.hpp"
 #include "tessera/io/map_file.hpp"
 #include "tessera/io/ros_bag.hpp"
+#include "tessera/io/session_file.hpp"
 
 namespace tessera::cli {
 
 InfoCommand::InfoCommand(CLI::App& app) {
   sub_ = app.add_subcommand("info",
-                            "Describe a map file (format, size, resolution, cell counts) or a ROS "
-                            "bag (topics, types, message counts, rates, duration)");
+                            "Describe a map file (format, size, resolution, cell counts), a ROS "
+                            "bag (topics, types, message counts, rates, duration) or a saved "
+                            "session (.tsm)");
   sub_->add_option("file", file_,
-                   "Map file (any format tessera reads) or ROS bag (.bag, .db3, .mcap or a "
-                   "rosbag2 folder)")
+                   "Map file (any format tessera reads), ROS bag (.bag, .db3, .mcap or a "
+                   "rosbag2 folder) or session (.tsm)")
       ->required();
   sub_->add_option("--map-resolution-m", map_resolution_m_,
                    "Cell size for map files that carry none (images, Moving AI)");
@@ -71,6 +73,7 @@ int InfoCommand::run_bag() const {
 
 int InfoCommand::run() const {
   if (is_ros_bag_path(file_)) return run_bag();
+  if (is_session_path(file_)) return run_session();
   MapLoadOptions load_options;
   load_options.resolution_m = map_resolution_m_;
   Result<LoadedMap> loaded = load_map(file_, load_options);

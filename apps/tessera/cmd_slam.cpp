@@ -75,6 +75,7 @@ SlamCommand::SlamCommand(CLI::App& app) {
   add_output_stream_options(*sub_, streams_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
   add_ros_options();
+  add_session_options();
 }
 
 int SlamCommand::run() const {
@@ -211,6 +212,7 @@ int SlamCommand::run() const {
       !s) {
     return report_error(s.error());
   }
+  if (Status s = save_session(log, r); !s) return report_error(s.error());
   if (MessageSink* file = recording->file_sink()) recording->note(record_laser_slam(*file, log, r));
   if (MessageSink* live = recording->live_sink()) {
     recording->note(record_laser_slam_result(*live, r));

@@ -48,6 +48,7 @@ int SlamCommand::run_ros() const {
   if (log_ || bag_ || world_.file) {
     return report_error(usage_error("--ros maps the topics: give no --log, --bag or --world"));
   }
+  if (save_) return report_error(usage_error("--save saves a --log, --bag or --world run"));
   nodes::SlamNodeOptions options;
   options.ns = ns_;
   options.slam.loop_closure = !no_loop_closure_;

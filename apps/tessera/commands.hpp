@@ -14,6 +14,8 @@
 #include "tessera/eval/trajectory_error.hpp"
 #include "tessera/mission/bob_mission.hpp"
 #include "tessera/mission/exploration_mission.hpp"
+#include "tessera/sensors/laser_log.hpp"
+#include "tessera/slam/laser_slam.hpp"
 
 namespace tessera::cli {
 
@@ -86,6 +88,7 @@ class InfoCommand : public Command {
 
  private:
   [[nodiscard]] int run_bag() const;
+  [[nodiscard]] int run_session() const;  // cmd_session.cpp
 
   std::filesystem::path file_;
   std::optional<double> map_resolution_m_;
@@ -198,6 +201,24 @@ class SlamCommand : public Command {
   std::uint32_t domain_ = 0;
   bool network_ = false;
   double idle_exit_s_ = 0.0;
+  // --save FILE.tsm: the session (cmd_session.cpp).
+  void add_session_options();
+  [[nodiscard]] Status save_session(const LaserLog& log, const slam::LaserSlamResult& r) const;
+  std::optional<std::filesystem::path> save_;
+};
+
+/// tessera session export: a saved session's map, pose graph and trajectory as files
+/// (cmd_session.cpp).
+class SessionCommand : public Command {
+ public:
+  explicit SessionCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  CLI::App* export_ = nullptr;
+  std::filesystem::path file_;
+  std::filesystem::path out_ = "out/session";
+  bool quiet_ = false;
 };
 
 /// tessera fusion: the thesis' Fusion SLAM on RGB-D data (fusion/). One mode per input: --pair DIR
@@ -305,7 +326,7 @@ class PlayCommand : public Command {
 
  private:
   std::filesystem::path log_;
-  double rate_ = 1.0;  // 0: as fast as possible
+  double rate_ = 1.0;       // 0: as fast as possible
   std::string scan_topic_;  // a bag's topics; empty: its only one
   std::string odom_topic_;
   std::string ns_;

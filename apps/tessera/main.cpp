@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   SimCommand sim(app);
   PlayCommand play(app);
   TeamCommand team(app);
+  SessionCommand session(app);
   add_config_options(app);
 
   try {
@@ -48,5 +49,6 @@ int main(int argc, char** argv) {
   if (sim.parsed()) return sim.run();
   if (play.parsed()) return play.run();
   if (team.parsed()) return team.run();
+  if (session.parsed()) return session.run();
   return kExitUsage;
 }

@@ -11,6 +11,8 @@
 #include <string>
 #include <utility>
 
+#include "internal/crc32.hpp"
+
 namespace tessera {
 namespace {
 
@@ -30,24 +32,9 @@ enum Opcode : std::uint8_t {
   kDataEnd = 0x0F,
 };
 
-// CRC-32 (IEEE 802.3, reflected, as zlib and the MCAP spec use it) on a pre-inverted state.
-std::uint32_t crc32_update(std::uint32_t state, std::string_view bytes) {
-  static const std::array<std::uint32_t, 256> kTable = [] {
-    std::array<std::uint32_t, 256> t{};
-    for (std::uint32_t i = 0; i < 256; ++i) {
-      std::uint32_t c = i;
-      for (int k = 0; k < 8; ++k) c = (c & 1U) != 0 ? 0xEDB88320U ^ (c >> 1) : c >> 1;
-      t[i] = c;
-    }
-    return t;
-  }();
-  for (const char ch : bytes) {
-    state = kTable[(state ^ static_cast<std::uint8_t>(ch)) & 0xFFU] ^ (state >> 8);
-  }
-  return state;
-}
-constexpr std::uint32_t kCrcInit = 0xFFFFFFFFU;
-std::uint32_t crc32_final(std::uint32_t state) { return state ^ 0xFFFFFFFFU; }
+using io_internal::crc32_final;
+using io_internal::crc32_update;
+constexpr std::uint32_t kCrcInit = io_internal::kCrc32Init;
 
 template <typename T>
 void put(std::string& out, T v) {

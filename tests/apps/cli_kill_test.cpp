@@ -196,14 +196,26 @@ void check_kills(ArgsFor args_for, int expected_outputs) {
 // Both commands also record the run (--record) into the output folder: the MCAP file is written
 // piece by piece while the others are written whole, and must survive a kill the same way.
 std::vector<std::string> explore_args(int seed, const fs::path& out) {
-  return {"explore", "--builtin", "labyrinth", "--seed",   std::to_string(seed),
+  return {"explore", "--builtin", "labyrinth",  "--seed",   std::to_string(seed),
           "--quiet", "--out",     out.string(), "--record", (out / "run.mcap").string()};
 }
 
+// slam also saves its session (--save): a run killed while it saves leaves the previous session.
 std::vector<std::string> slam_args(int seed, const fs::path& out) {
-  return {"slam",     "--builtin",  "labyrinth", "--seed",   std::to_string(seed),
-          "--duration-s", "5",      "--quiet",   "--out",    out.string(),
-          "--record", (out / "run.mcap").string()};
+  return {"slam",
+          "--builtin",
+          "labyrinth",
+          "--seed",
+          std::to_string(seed),
+          "--duration-s",
+          "5",
+          "--quiet",
+          "--out",
+          out.string(),
+          "--record",
+          (out / "run.mcap").string(),
+          "--save",
+          (out / "run.tsm").string()};
 }
 
 TEST(CliKill, ExploreKilledAtRandomLeavesEveryOutputOldOrNewAndComplete) {
@@ -213,8 +225,8 @@ TEST(CliKill, ExploreKilledAtRandomLeavesEveryOutputOldOrNewAndComplete) {
 
 TEST(CliKill, SlamKilledAtRandomLeavesEveryOutputOldOrNewAndComplete) {
   // map.yaml, map.pgm, map.png, trajectory.txt, graph.g2o, report.json, truth.txt, odometry.txt,
-  // run.mcap
-  check_kills(&slam_args, 9);
+  // run.mcap, run.tsm
+  check_kills(&slam_args, 10);
 }
 
 }  // namespace

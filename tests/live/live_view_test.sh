@@ -34,6 +34,10 @@ node_run() { node "$@"; }
 start() {
   local name=$1
   shift
+  # The files exist before the program starts: the background child opens them only when it
+  # runs, and a sed that finds none would end the script (set -e) on a busy machine.
+  : > "$work/$name.out"
+  : > "$work/$name.err"
   "$cli" "$@" --serve 0 --quiet > "$work/$name.out" 2> "$work/$name.err" &
   pids+=($!)
   port=""

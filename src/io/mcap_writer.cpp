@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "internal/byte_writer.hpp"
 #include "internal/crc32.hpp"
 
 namespace tessera {
@@ -36,17 +37,8 @@ using io_internal::crc32_final;
 using io_internal::crc32_update;
 constexpr std::uint32_t kCrcInit = io_internal::kCrc32Init;
 
-template <typename T>
-void put(std::string& out, T v) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &v, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
-
-void put_string(std::string& out, std::string_view s) {
-  put(out, static_cast<std::uint32_t>(s.size()));
-  out.append(s);
-}
+using io_internal::put;
+using io_internal::put_string;
 
 std::string record(Opcode op, const std::string& content) {
   std::string out;

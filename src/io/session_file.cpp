@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "internal/byte_cursor.hpp"
+#include "internal/byte_writer.hpp"
 #include "internal/crc32.hpp"
 #include "internal/file_util.hpp"
 #include "tessera/io/atomic_file.hpp"
@@ -22,18 +23,10 @@ constexpr std::string_view kCrcTag = "CRC ";
 // A record: a 4-character tag, its payload's length (u64) and the payload.
 constexpr std::size_t kRecordHead = 4 + 8;
 
-// ---- writing: little-endian integers, IEEE-754 doubles and floats -------------------------------
+// ---- writing ------------------------------------------------------------------------------------
 
-template <typename T>
-void put(std::string& out, T v) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &v, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
-void put_text(std::string& out, std::string_view s) {
-  put(out, static_cast<std::uint32_t>(s.size()));
-  out.append(s);
-}
+using io_internal::put;
+using io_internal::put_string;
 void put_pose(std::string& out, const Pose2& p) {
   put(out, p.x);
   put(out, p.y);
@@ -233,11 +226,11 @@ std::string encode_session(const Session& s) {
   std::string out(kSignature);
   put(out, kSessionFormatVersion);
   std::string meta;
-  put_text(meta, s.tessera_version);
-  put_text(meta, s.command);
+  put_string(meta, s.tessera_version);
+  put_string(meta, s.command);
   put_record(out, "META", meta);
   std::string options;
-  put_text(options, s.options_yaml);
+  put_string(options, s.options_yaml);
   put_record(out, "OPTS", options);
   put_record(out, "SCAN", scans_payload(s.scans));
   std::string trajectory;

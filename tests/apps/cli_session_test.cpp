@@ -4,8 +4,6 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -15,18 +13,11 @@
 namespace tessera {
 namespace {
 
+using support::read_bytes;
 using support::run_cli;
 using support::TempDir;
+using support::write_bytes;
 using ::testing::HasSubstr;
-
-std::string read_bytes(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-void write_bytes(const std::filesystem::path& p, const std::string& bytes) {
-  std::ofstream(p, std::ios::binary) << bytes;
-}
 
 // One simulated SLAM run saved as a session, shared by the tests.
 const std::filesystem::path& saved_run() {

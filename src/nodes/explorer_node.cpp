@@ -172,8 +172,7 @@ struct ExplorerNode::State {
     }
     if (const std::optional<Pose2>& T = T_team_teammate.at(name); !T) {
       // Checked now as the merge would check it, kept for the next match.
-      if (team::MapMerger check(options.slam.slam.map_resolution_m);
-          !check.update(name, *m, Pose2{}).ok()) {
+      if (!direct.check(name, *m, Pose2{}).ok()) {
         ++stats.teammate_maps_dropped;
         return;
       }

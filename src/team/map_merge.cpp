@@ -186,8 +186,8 @@ void add_sampled(const GridGeometry& g, const View& v, int n, Accumulator& acc) 
 
 MapMerger::MapMerger(double resolution_m) : resolution_m_(resolution_m) {}
 
-Status MapMerger::update(const std::string& robot, const OccupancyGridMessage& map,
-                         const Pose2& T_team_map) {
+Status MapMerger::check(const std::string& robot, const OccupancyGridMessage& map,
+                        const Pose2& T_team_map) const {
   const double r = map.resolution_m;
   if (!(std::abs(r - resolution_m_) <= 1e-3 * resolution_m_)) {
     return input_error("map of " + robot + ": resolution " + std::to_string(r) +
@@ -202,6 +202,12 @@ Status MapMerger::update(const std::string& robot, const OccupancyGridMessage& m
                          T_team_map.y, T_team_map.theta}) {
     if (!std::isfinite(v)) return input_error("map of " + robot + ": origin is not finite");
   }
+  return Ok{};
+}
+
+Status MapMerger::update(const std::string& robot, const OccupancyGridMessage& map,
+                         const Pose2& T_team_map) {
+  if (Status s = check(robot, map, T_team_map); !s.ok()) return s;
   maps_[robot] = {map, T_team_map};
   return Ok{};
 }

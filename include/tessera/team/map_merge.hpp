@@ -35,6 +35,9 @@ class MapMerger {
   /// besides the copy.
   [[nodiscard]] Status update(const std::string& robot, const OccupancyGridMessage& map,
                               const Pose2& T_team_map);
+  /// The checks of update() alone, keeping nothing: for a map held aside until it can be placed.
+  [[nodiscard]] Status check(const std::string& robot, const OccupancyGridMessage& map,
+                             const Pose2& T_team_map) const;
   /// How many robots have a map in the team's. A robot that dies keeps its last map here.
   [[nodiscard]] std::size_t robots() const { return maps_.size(); }
 

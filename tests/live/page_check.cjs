@@ -76,20 +76,24 @@ const fail = (why) => { console.error(`page_check (${view}): FAIL: ${why}`); pro
     // the run 40 % of the way through.
     const replay = await page.evaluate(async () => {
       const frame = () => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-      const cells = () => Number(document.getElementById('view').dataset.mapCells);
+      // How much of the run is drawn: the known cells, or for a fusion run (no grid) its paths' poses.
+      const view = document.getElementById('view');
+      const drawn = () => Number(document.body.dataset.view === 'fusion' ? view.dataset.pathPoses : view.dataset.mapCells);
+      const end = drawn();
       document.getElementById('first').click(); await frame();
-      const first = cells();
+      const first = drawn();
       document.getElementById('step').click(); await frame();
       const seek = document.getElementById('seek');
       seek.value = String(Math.round(0.4 * Number(seek.max)));
       seek.dispatchEvent(new Event('input')); await frame();
-      return { first, steps: Number(seek.max) + 1, clock: document.getElementById('clock').textContent };
+      return { first, end, steps: Number(seek.max) + 1, clock: document.getElementById('clock').textContent };
     });
-    if (replay.steps > 2 && !(replay.first < dom.mapCells)) fail(`stepping back to the start shows ${replay.first} known cells, the end ${dom.mapCells}`);
+    const what = view === 'fusion' ? 'path poses' : 'known cells';
+    if (replay.steps > 2 && !(replay.first < replay.end)) fail(`stepping back to the start shows ${replay.first} ${what}, the end ${replay.end}`);
     await page.screenshot({ path: screenshot.replace(/\.png$/, '-mid.png'), type: 'png' });
     console.log(`page_check (${view}): ${dom.messages} messages, ${dom.mapCells} known cells, ` +
                 `${dom.robots} robot(s), ${dom.paths} path(s), ${dom.markers} markers; screenshot ` +
-                `${JSON.stringify(colours)}; replay: first step ${replay.first} cells of ${replay.steps} steps`);
+                `${JSON.stringify(colours)}; replay: first step ${replay.first} of ${replay.end} ${what}, ${replay.steps} steps`);
   } finally {
     await browser.close();
   }

@@ -107,11 +107,9 @@ ScanMatch match_real_time(const ProbabilityGrid& grid, const Pose2& T_grid_robot
 
 namespace {
 
-std::uint8_t quantize(std::uint16_t value) {
-  if (value == kUnknownCellValue) return 0;
-  const double p = value_to_probability(value);
-  return static_cast<std::uint8_t>(
-      std::lround(255.0 * (p - kMinProbability) / (kMaxProbability - kMinProbability)));
+std::uint8_t quantize_probability(double p) {
+  return static_cast<std::uint8_t>(std::lround(
+      255.0 * std::clamp((p - kMinProbability) / (kMaxProbability - kMinProbability), 0.0, 1.0)));
 }
 
 double score_of(long sum, std::size_t points) {
@@ -121,7 +119,8 @@ double score_of(long sum, std::size_t points) {
 
 }  // namespace
 
-BranchAndBoundMatcher::BranchAndBoundMatcher(const ProbabilityGrid& grid, int depth)
+BranchAndBoundMatcher::BranchAndBoundMatcher(const ProbabilityGrid& grid, int depth,
+                                             double unknown_probability)
     : geometry_(grid.geometry()) {
   TESSERA_ASSERT(depth >= 1);
   const int w = geometry_.width(), h = geometry_.height();
@@ -130,7 +129,12 @@ BranchAndBoundMatcher::BranchAndBoundMatcher(const ProbabilityGrid& grid, int de
   base.height = h;
   base.offset = 0;
   base.cells.resize(geometry_.size());
-  for (std::size_t i = 0; i < base.cells.size(); ++i) base.cells[i] = quantize(grid.values()[i]);
+  const std::uint8_t unknown = quantize_probability(unknown_probability);
+  for (std::size_t i = 0; i < base.cells.size(); ++i) {
+    const std::uint16_t value = grid.values()[i];
+    base.cells[i] =
+        value == kUnknownCellValue ? unknown : quantize_probability(value_to_probability(value));
+  }
   levels_.push_back(std::move(base));
   for (int d = 1; d < depth; ++d) {
     const Level& finer = levels_.back();
@@ -178,14 +182,16 @@ struct BranchAndBoundMatcher::Search {
   };
 
   const BranchAndBoundMatcher& matcher;
+  Pose2 prior;
+  std::optional<ExcludedPoses> excluded;
   std::vector<double> angles;
   std::vector<std::vector<Cell>> scans;
   int n_lin = 0;
   int zero_angle = 0;  // index of the smallest |angle|
 
-  Search(const BranchAndBoundMatcher& m, const Pose2& prior, const std::vector<Vec2>& points,
-         const SearchWindow& window)
-      : matcher(m) {
+  Search(const BranchAndBoundMatcher& m, const Pose2& prior_pose, const std::vector<Vec2>& points,
+         const SearchWindow& window, const std::optional<ExcludedPoses>& excluded_poses)
+      : matcher(m), prior(prior_pose), excluded(excluded_poses) {
     const double res = m.geometry_.resolution_m();
     angles = angle_offsets(window.angular_rad, angular_search_step_rad(res, max_range_of(points)));
     n_lin = static_cast<int>(std::ceil(window.linear_m / res - 1e-9));
@@ -211,6 +217,17 @@ struct BranchAndBoundMatcher::Search {
     return sum;
   }
 
+  /// True for a full-resolution candidate among the excluded poses.
+  [[nodiscard]] bool is_excluded(const Candidate& c) const {
+    if (!excluded) return false;
+    const double res = matcher.geometry_.resolution_m();
+    const double dx = prior.x + c.x * res - excluded->around.x;
+    const double dy = prior.y + c.y * res - excluded->around.y;
+    const double dtheta = normalize_angle(prior.theta + angles[static_cast<std::size_t>(c.angle)] -
+                                          excluded->around.theta);
+    return std::hypot(dx, dy) <= excluded->linear_m && std::abs(dtheta) <= excluded->angular_rad;
+  }
+
   static void sort(std::vector<Candidate>& candidates) {
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const Candidate& a, const Candidate& b) { return a.sum > b.sum; });
@@ -222,7 +239,10 @@ struct BranchAndBoundMatcher::Search {
     std::optional<Candidate> best;
     for (const Candidate& c : candidates) {
       if (c.sum <= bound) break;  // sorted: no later candidate can do better
-      if (level == 0) return c;
+      if (level == 0) {
+        if (is_excluded(c)) continue;
+        return c;
+      }
       const int half = 1 << (level - 1);
       std::vector<Candidate> children;
       children.reserve(4);
@@ -244,8 +264,7 @@ struct BranchAndBoundMatcher::Search {
     return best;
   }
 
-  [[nodiscard]] ScanMatch to_match(const Pose2& prior, const Candidate& c,
-                                   std::size_t points) const {
+  [[nodiscard]] ScanMatch to_match(const Candidate& c, std::size_t points) const {
     const double res = matcher.geometry_.resolution_m();
     return {{prior.x + c.x * res, prior.y + c.y * res,
              normalize_angle(prior.theta + angles[static_cast<std::size_t>(c.angle)])},
@@ -270,12 +289,12 @@ long sum_bound(double min_score, std::size_t points) {
 
 }  // namespace
 
-std::optional<ScanMatch> BranchAndBoundMatcher::match(const Pose2& T_grid_robot_prior,
-                                                      const std::vector<Vec2>& points_robot,
-                                                      const SearchWindow& window,
-                                                      double min_score) const {
+std::optional<ScanMatch> BranchAndBoundMatcher::match(
+    const Pose2& T_grid_robot_prior, const std::vector<Vec2>& points_robot,
+    const SearchWindow& window, double min_score,
+    const std::optional<ExcludedPoses>& excluded) const {
   if (points_robot.empty()) return std::nullopt;
-  const Search search(*this, T_grid_robot_prior, points_robot, window);
+  const Search search(*this, T_grid_robot_prior, points_robot, window, excluded);
   const int top = depth() - 1;
   const int step = 1 << top;
   std::vector<Search::Candidate> roots;
@@ -303,7 +322,7 @@ std::optional<ScanMatch> BranchAndBoundMatcher::match(const Pose2& T_grid_robot_
            ++y) {
         Search::Candidate c{a, x, y, 0};
         c.sum = search.score(0, c);
-        if (c.sum > bound) {
+        if (c.sum > bound && !search.is_excluded(c)) {
           best = c;
           bound = c.sum;
         }
@@ -312,14 +331,14 @@ std::optional<ScanMatch> BranchAndBoundMatcher::match(const Pose2& T_grid_robot_
   }
   if (std::optional<Search::Candidate> better = search.branch(top, roots, bound)) best = better;
   if (!best) return std::nullopt;
-  return search.to_match(T_grid_robot_prior, *best, points_robot.size());
+  return search.to_match(*best, points_robot.size());
 }
 
 std::optional<ScanMatch> BranchAndBoundMatcher::match_exhaustive(
     const Pose2& T_grid_robot_prior, const std::vector<Vec2>& points_robot,
     const SearchWindow& window, double min_score) const {
   if (points_robot.empty()) return std::nullopt;
-  const Search search(*this, T_grid_robot_prior, points_robot, window);
+  const Search search(*this, T_grid_robot_prior, points_robot, window, std::nullopt);
   std::optional<Search::Candidate> best;
   long bound = sum_bound(min_score, points_robot.size());
   for (int a = 0; a < static_cast<int>(search.angles.size()); ++a) {
@@ -335,7 +354,7 @@ std::optional<ScanMatch> BranchAndBoundMatcher::match_exhaustive(
     }
   }
   if (!best) return std::nullopt;
-  return search.to_match(T_grid_robot_prior, *best, points_robot.size());
+  return search.to_match(*best, points_robot.size());
 }
 
 }  // namespace tessera::slam

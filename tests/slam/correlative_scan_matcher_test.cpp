@@ -90,6 +90,29 @@ TEST(BranchAndBoundMatcher, FindsThePoseInAFullTurn) {
   EXPECT_GT(m->score, 0.45);
 }
 
+// The runner-up of a global relocalization: with the best pose's neighbourhood excluded, the
+// search returns the best pose outside it, which scores less; excluding nothing changes nothing.
+TEST(BranchAndBoundMatcher, ExcludedPosesAreNeverReturned) {
+  const Scene s;
+  const BranchAndBoundMatcher matcher(s.grid, 6);
+  const SearchWindow window{1.0, std::numbers::pi};
+  const std::optional<ScanMatch> best = matcher.match(s.truth, s.points, window, 0.3);
+  ASSERT_TRUE(best.has_value());
+  const ExcludedPoses around_best{best->T_grid_robot, 0.3, 0.2};
+  const std::optional<ScanMatch> other = matcher.match(s.truth, s.points, window, 0.2, around_best);
+  ASSERT_TRUE(other.has_value());
+  const bool outside =
+      std::hypot(other->T_grid_robot.x - best->T_grid_robot.x,
+                 other->T_grid_robot.y - best->T_grid_robot.y) > 0.3 ||
+      std::abs(normalize_angle(other->T_grid_robot.theta - best->T_grid_robot.theta)) > 0.2;
+  EXPECT_TRUE(outside);
+  EXPECT_LT(other->score, best->score);
+  const ExcludedPoses far_away{{50.0, 50.0, 0.0}, 0.3, 0.2};
+  const std::optional<ScanMatch> same = matcher.match(s.truth, s.points, window, 0.3, far_away);
+  ASSERT_TRUE(same.has_value());
+  EXPECT_DOUBLE_EQ(same->score, best->score);
+}
+
 TEST(BranchAndBoundMatcher, FindsNothingBelowTheMinimumScore) {
   const Scene s;
   const BranchAndBoundMatcher matcher(s.grid, 4);

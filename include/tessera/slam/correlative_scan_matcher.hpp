@@ -61,13 +61,25 @@ struct SearchWindow {
   double angular_rad = 3.14159265358979323846;
 };
 
+/// Poses a search skips: those within linear_m (in the plane) and angular_rad of `around`. A
+/// search that excludes the best pose's neighbourhood finds the best pose of another place, the
+/// runner-up that tells whether the best is clearly best (global relocalization).
+struct ExcludedPoses {
+  Pose2 around;
+  double linear_m = 1.0;
+  double angular_rad = 0.5;
+};
+
 /// The precomputed grids of branch and bound: level d holds, for every cell (x, y), the highest
 /// cell value of the original grid in [x, x + 2^d) x [y, y + 2^d) (quantised to 8 bits: 0 for
 /// kMinProbability and unknown, 255 for kMaxProbability). Built once per finished submap.
 class BranchAndBoundMatcher {
  public:
-  /// depth: number of levels (1 = only the full-resolution one). Cost: O(depth * cells).
-  BranchAndBoundMatcher(const ProbabilityGrid& grid, int depth);
+  /// depth: number of levels (1 = only the full-resolution one). Unknown cells score as
+  /// unknown_probability (a loop closure counts them as free; a relocalization whose view sees
+  /// beyond the map may count them as even odds). Cost: O(depth * cells).
+  BranchAndBoundMatcher(const ProbabilityGrid& grid, int depth,
+                        double unknown_probability = kMinProbability);
 
   [[nodiscard]] int depth() const { return static_cast<int>(levels_.size()); }
   [[nodiscard]] const GridGeometry& geometry() const { return geometry_; }
@@ -80,9 +92,11 @@ class BranchAndBoundMatcher {
   /// first found wins (a pose near the prior, else the one of the most promising branch).
   /// Cost: O(angles * points) to discretise, then typically a small share of the exhaustive
   /// O(angles * window cells * points).
-  [[nodiscard]] std::optional<ScanMatch> match(const Pose2& T_grid_robot_prior,
-                                               const std::vector<Vec2>& points_robot,
-                                               const SearchWindow& window, double min_score) const;
+  /// With `excluded`, its poses are never returned (the bounds still hold: they only skip leaves).
+  [[nodiscard]] std::optional<ScanMatch> match(
+      const Pose2& T_grid_robot_prior, const std::vector<Vec2>& points_robot,
+      const SearchWindow& window, double min_score,
+      const std::optional<ExcludedPoses>& excluded = std::nullopt) const;
 
   /// The same search scoring every candidate at full resolution (the reference for tests).
   [[nodiscard]] std::optional<ScanMatch> match_exhaustive(const Pose2& T_grid_robot_prior,

@@ -17,12 +17,10 @@
 #include "tessera/eval/map_accuracy.hpp"
 #include "tessera/eval/relation_metric.hpp"
 #include "tessera/io/atomic_file.hpp"
-#include "tessera/io/carmen_log.hpp"
 #include "tessera/io/g2o_file.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/relations_file.hpp"
-#include "tessera/io/robot_bag.hpp"
 #include "tessera/io/tum_trajectory.hpp"
 #include "tessera/record/slam_recording.hpp"
 #include "tessera/render/render.hpp"
@@ -40,16 +38,7 @@ SlamCommand::SlamCommand(CLI::App& app) {
       "laser log (--log), or on a simulated run in a world (--world / --builtin) scored against "
       "its ground truth; writes map.yaml + map.pgm, map.png, trajectory.txt (one pose per scan), "
       "graph.g2o and report.json to --out");
-  sub_->add_option("--log", log_, "Laser log: CARMEN .clf/.log (FLASER, ROBOTLASER1, RAWLASER1)");
-  sub_->add_option("--bag", bag_,
-                   "ROS bag: a ROS 1 .bag, a rosbag2 folder, a .db3 or an .mcap file (LaserScan, "
-                   "Odometry, the laser pose from /tf_static and /tf)");
-  sub_->add_option("--scan-topic", scan_topic_,
-                   "--bag: the sensor_msgs/LaserScan topic (needed when there are several)");
-  sub_->add_option("--odom-topic", odom_topic_,
-                   "--bag: the nav_msgs/Odometry topic (needed when there are several)");
-  sub_->add_option("--base-frame", base_frame_,
-                   "--bag: the robot frame (default: the odometry's child_frame_id)");
+  input_.add_options(*sub_);
   add_world_options(*sub_, world_);
   sub_->add_option("--seed", seed_, "Simulated run: seed of the start, odometry and range noise")
       ->capture_default_str();
@@ -83,14 +72,11 @@ int SlamCommand::run() const {
   if (!std::isfinite(time_offset_s_)) {
     return report_error(usage_error("--time-offset must be a finite number of seconds"));
   }
-  if (log_ && world_.file) return report_error(usage_error("give --log or --world, not both"));
-  if (bag_ && (log_ || world_.file)) {
-    return report_error(usage_error("give --bag alone, not with --log or --world"));
+  if (input_.given() && world_.file) {
+    return report_error(usage_error("give --log or --bag, or --world, not both"));
   }
-  if (!bag_ && (!scan_topic_.empty() || !odom_topic_.empty() || !base_frame_.empty())) {
-    return report_error(usage_error("--scan-topic, --odom-topic and --base-frame need --bag"));
-  }
-  if (!log_ && !bag_ && relations_) {
+  if (Status s = input_.check(); !s) return report_error(s.error());
+  if (!input_.given() && relations_) {
     return report_error(usage_error("--relations scores a log: it needs --log or --bag"));
   }
   slam::LaserSlamOptions options;
@@ -101,15 +87,10 @@ int SlamCommand::run() const {
   std::optional<World> world;
   std::optional<SimulatedLaserRun> simulated;
   nlohmann::json bag_report;  // --bag: the topics and frames read
-  if (log_) {
-    Result<LaserLog> read = read_carmen_log(*log_);
+  if (input_.given()) {
+    Result<LaserLog> read = input_.read(&bag_report);
     if (!read) return report_error(read.error());
     read_log = std::move(read).value();
-  } else if (bag_) {
-    Result<RobotBag> read = read_robot_bag(*bag_, {scan_topic_, odom_topic_, base_frame_});
-    if (!read) return report_error(read.error());
-    bag_report = bag_json(*read);
-    read_log = std::move(read->log);
   } else {
     Result<World> loaded = load_world(world_, 0.05);
     if (!loaded) return report_error(loaded.error());
@@ -132,7 +113,7 @@ int SlamCommand::run() const {
   const LaserLog& log = simulated ? simulated->log : *read_log;
   options.map_resolution_m = cell_m_ ? *cell_m_ : world ? world->geometry().resolution_m() : 0.05;
   if (auto problem = slam::validate(options)) return report_error(usage_error(*problem));
-  const std::string input_name = log_ ? log_->string() : bag_ ? bag_->string() : world->name();
+  const std::string input_name = input_.given() ? input_.name() : world->name();
   std::optional<std::vector<Relation>> relations;
   if (relations_) {
     Result<std::vector<Relation>> read = read_relations(*relations_);
@@ -175,16 +156,16 @@ int SlamCommand::run() const {
 
   const slam::LaserSlamStats& st = r.stats;
   nlohmann::json report = {{"options", slam_options_json(options,
-                                                         log_   ? "log"
-                                                         : bag_ ? "bag"
-                                                                : "world",
+                                                         input_.log   ? "log"
+                                                         : input_.bag ? "bag"
+                                                                      : "world",
                                                          input_name)},
                            {"slam", slam_stats_json(r, log)}};
   // A log has no random draw: the seed is null unless the run is simulated.
   report.update(core_report({"slam", simulated ? std::optional<std::uint64_t>(seed_) : std::nullopt,
                              report["options"], wall_s, duration_s}));
   if (relations_) report["options"]["relations"] = relations_->string();
-  if (bag_) report["bag"] = bag_report;
+  if (input_.bag) report["bag"] = bag_report;
   // A simulated run: its ATE of SLAM, local SLAM and odometry against the truth, and the map
   // against the world, aligned as the ATE aligns the trajectory.
   std::optional<DriftCorrectionScore> score;

@@ -45,7 +45,7 @@ void SlamCommand::add_ros_options() {
 }
 
 int SlamCommand::run_ros() const {
-  if (log_ || bag_ || world_.file) {
+  if (input_.given() || world_.file) {
     return report_error(usage_error("--ros maps the topics: give no --log, --bag or --world"));
   }
   if (save_) return report_error(usage_error("--save saves a --log, --bag or --world run"));

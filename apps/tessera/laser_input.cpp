@@ -1,0 +1,77 @@
+#include "laser_input.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "slam_report.hpp"
+#include "tessera/io/carmen_log.hpp"
+#include "tessera/io/robot_bag.hpp"
+
+namespace tessera::cli {
+
+void LaserInput::add_options(CLI::App& command) {
+  command.add_option("--log", log, "Laser log: CARMEN .clf/.log (FLASER, ROBOTLASER1, RAWLASER1)");
+  command.add_option("--bag", bag,
+                     "ROS bag: a ROS 1 .bag, a rosbag2 folder, a .db3 or an .mcap file (LaserScan, "
+                     "Odometry, the laser pose from /tf_static and /tf)");
+  command.add_option("--scan-topic", scan_topic,
+                     "--bag: the sensor_msgs/LaserScan topic (needed when there are several)");
+  command.add_option("--odom-topic", odom_topic,
+                     "--bag: the nav_msgs/Odometry topic (needed when there are several)");
+  command.add_option("--base-frame", base_frame,
+                     "--bag: the robot frame (default: the odometry's child_frame_id)");
+  command
+      .add_option("--from-s", from_s,
+                  "Use the scans from this many seconds after the first one (--log, --bag)")
+      ->check(CLI::NonNegativeNumber);
+  command
+      .add_option("--to-s", to_s,
+                  "Use the scans up to this many seconds after the first one (--log, --bag)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+std::string LaserInput::name() const {
+  return log ? log->string() : bag ? bag->string() : std::string{};
+}
+
+Status LaserInput::check() const {
+  if (log && bag) return usage_error("give --log or --bag, not both");
+  if (!bag && (!scan_topic.empty() || !odom_topic.empty() || !base_frame.empty())) {
+    return usage_error("--scan-topic, --odom-topic and --base-frame need --bag");
+  }
+  if (!given() && (from_s || to_s)) return usage_error("--from-s and --to-s cut a --log or --bag");
+  if (from_s && to_s && !(*from_s < *to_s)) {
+    return usage_error(fmt::format("--from-s {} must be before --to-s {}", *from_s, *to_s));
+  }
+  return Ok{};
+}
+
+Result<LaserLog> LaserInput::read(nlohmann::json* bag_report) const {
+  LaserLog out;
+  if (log) {
+    Result<LaserLog> read = read_carmen_log(*log);
+    if (!read) return read.error();
+    out = std::move(read).value();
+  } else {
+    Result<RobotBag> read = read_robot_bag(*bag, {scan_topic, odom_topic, base_frame});
+    if (!read) return read.error();
+    if (bag_report) *bag_report = bag_json(*read);
+    out = std::move(read->log);
+  }
+  if ((from_s || to_s) && !out.scans.empty()) {
+    // In file order, by each scan's time since the first scan (CARMEN stamps may step back).
+    const double t0 = out.scans.front().t_s;
+    const double from = from_s.value_or(-INFINITY), to = to_s.value_or(INFINITY);
+    const auto outside = [&](double t_s) { return !(t_s - t0 >= from && t_s - t0 <= to); };
+    std::erase_if(out.scans, [&](const StampedScan& s) { return outside(s.t_s); });
+    std::erase_if(out.odometry, [&](const OdometryReading& o) { return outside(o.t_s); });
+    if (out.scans.empty()) {
+      return input_error(fmt::format("{}: no scan from {} s to {} s after its first scan", name(),
+                                     from_s.value_or(0.0), to));
+    }
+  }
+  return out;
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,37 @@
+#pragma once
+// A real robot's laser input on the command line, shared by `slam` and `localize`: a CARMEN log
+// (--log) or a ROS bag (--bag with its topics and frame), optionally cut to a time window
+// (--from-s / --to-s, seconds from the first scan).
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "tessera/core/result.hpp"
+#include "tessera/sensors/laser_log.hpp"
+
+namespace tessera::cli {
+
+struct LaserInput {
+  std::optional<std::filesystem::path> log;
+  std::optional<std::filesystem::path> bag;
+  std::string scan_topic;  // --bag: empty chooses by type
+  std::string odom_topic;
+  std::string base_frame;  // --bag: empty is the odometry's child frame
+  std::optional<double> from_s;
+  std::optional<double> to_s;
+
+  void add_options(CLI::App& command);
+  [[nodiscard]] bool given() const { return log || bag; }
+  /// The file read.
+  [[nodiscard]] std::string name() const;
+  /// Usage error for options that do not go together (topics without a bag, both inputs, an
+  /// empty window).
+  [[nodiscard]] Status check() const;
+  /// Reads the input and cuts it to the window; `bag_report` (may be null) gets a bag's topics
+  /// and frames. Input error when the window holds no scan.
+  [[nodiscard]] Result<LaserLog> read(nlohmann::json* bag_report) const;
+};
+
+}  // namespace tessera::cli

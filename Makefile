@@ -60,6 +60,13 @@ bench: build
 slam-table: cli
 	python3 scripts/slam_log_table.py --images docs/images
 
+# Issue 16's localization figures on the Intel log: map 0-600 s, localize 600-1,088 s (relations,
+# real-time factor), relocalize from 50 starts with no initial pose, 10 kidnappings
+# (docs/localization.md).
+.PHONY: localize-bench
+localize-bench: build
+	build/dev/bench/slam/localize_bench
+
 # Issue 14's throughput benchmark: tessera team with 1, 3 and 8 robot processes over DDS; prints
 # map and claim traffic per robot and the scan-to-map latency (docs/ros2.md).
 .PHONY: team-bench

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli_support.hpp"
+#include "laser_input.hpp"
 #include "recording.hpp"
 #include "tessera/eval/trajectory_error.hpp"
 #include "tessera/mission/bob_mission.hpp"
@@ -177,11 +178,7 @@ class SlamCommand : public Command {
   [[nodiscard]] int run() const;
 
  private:
-  std::optional<std::filesystem::path> log_;  // empty: a simulated run in world_
-  std::optional<std::filesystem::path> bag_;  // a ROS bag instead of a CARMEN log
-  std::string scan_topic_;                    // --bag: empty chooses by type
-  std::string odom_topic_;
-  std::string base_frame_;  // --bag: empty is the odometry's child frame
+  LaserInput input_;  // --log or --bag; neither: a simulated run in world_
   WorldSource world_;
   std::uint64_t seed_ = 1;
   double duration_s_ = 300.0;
@@ -218,6 +215,23 @@ class SessionCommand : public Command {
   CLI::App* export_ = nullptr;
   std::filesystem::path file_;
   std::filesystem::path out_ = "out/session";
+  bool quiet_ = false;
+};
+
+/// tessera localize: a robot's pose in a saved session's map, tracked and relocalized without
+/// mapping (cmd_localize.cpp; slam/localizer.hpp).
+class LocalizeCommand : public Command {
+ public:
+  explicit LocalizeCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  std::filesystem::path session_;
+  LaserInput input_;
+  std::optional<std::string> initial_pose_;  // "X,Y,THETA"
+  std::filesystem::path out_ = "out/localize";
+  std::optional<std::filesystem::path> relations_;
+  double time_offset_s_ = 0.0;
   bool quiet_ = false;
 };
 

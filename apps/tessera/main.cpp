@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   PlayCommand play(app);
   TeamCommand team(app);
   SessionCommand session(app);
+  LocalizeCommand localize(app);
   add_config_options(app);
 
   try {
@@ -50,5 +51,6 @@ int main(int argc, char** argv) {
   if (play.parsed()) return play.run();
   if (team.parsed()) return team.run();
   if (session.parsed()) return session.run();
+  if (localize.parsed()) return localize.run();
   return kExitUsage;
 }

@@ -1,0 +1,220 @@
+// tessera localize: the robot's pose in a saved session's map, scan by scan, with no new map
+// (slam/localizer.hpp): tracking, loss detection, and global relocalization when no initial pose
+// is given or tracking is lost. Thin glue: read the session and the log first, so that bad input
+// writes nothing; localize; write the poses, the picture and report.json.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "slam_report.hpp"
+#include "tessera/core/angle.hpp"
+#include "tessera/eval/relation_metric.hpp"
+#include "tessera/io/atomic_file.hpp"
+#include "tessera/io/json_file.hpp"
+#include "tessera/io/relations_file.hpp"
+#include "tessera/io/session_file.hpp"
+#include "tessera/io/tum_trajectory.hpp"
+#include "tessera/render/render.hpp"
+#include "tessera/report/core_report.hpp"
+#include "tessera/report/eval_report.hpp"
+#include "tessera/slam/localizer.hpp"
+
+namespace tessera::cli {
+namespace {
+
+/// Empty when the log's laser is the session's (beams, their angles and range); otherwise what
+/// differs. A map made with one laser cannot be matched with scans of another laid out otherwise.
+std::optional<std::string> sensor_difference(const RangeScan& session, const RangeScan& log) {
+  const auto describe = [](const RangeScan& s) {
+    return fmt::format("{} beams from {:.2f} deg every {:.3f} deg", s.ranges_m.size(),
+                       rad_to_deg(s.angle_min_rad), rad_to_deg(s.angle_increment_rad));
+  };
+  if (session.ranges_m.size() != log.ranges_m.size() ||
+      std::abs(session.angle_min_rad - log.angle_min_rad) > 1e-4 ||
+      std::abs(session.angle_increment_rad - log.angle_increment_rad) > 1e-6) {
+    return fmt::format("its laser ({}) is not the session's ({})", describe(log),
+                       describe(session));
+  }
+  return std::nullopt;
+}
+
+/// One line per scan: its stamp, state, whether the pose is to be trusted, the pose, its score,
+/// the share of the scan on the map, and the pose's standard deviations.
+std::string encode_poses_csv(const std::vector<slam::LocalizedScan>& scans) {
+  std::string out =
+      "t_s,state,confident,x_m,y_m,theta_rad,score,map_share,sigma_x_m,sigma_y_m,"
+      "sigma_theta_rad\n";
+  for (const slam::LocalizedScan& s : scans) {
+    const Eigen::Matrix3d& c = s.covariance;
+    out +=
+        fmt::format("{:.6f},{},{:d},{:.4f},{:.4f},{:.5f},{:.4f},{:.3f},{:.4g},{:.4g},{:.4g}\n",
+                    s.t_s, slam::to_string(s.state), s.confident, s.T_map_robot.x, s.T_map_robot.y,
+                    s.T_map_robot.theta, s.score, s.map_share, std::sqrt(std::max(0.0, c(0, 0))),
+                    std::sqrt(std::max(0.0, c(1, 1))), std::sqrt(std::max(0.0, c(2, 2))));
+  }
+  return out;
+}
+
+}  // namespace
+
+LocalizeCommand::LocalizeCommand(CLI::App& app) {
+  sub_ = app.add_subcommand(
+      "localize",
+      "Localize a robot in a saved session's map (tessera slam --save) without mapping: tracks "
+      "every scan against the frozen map, finds the robot with no initial pose (branch and bound "
+      "over the whole map, accepted only when clearly better than any other place) and again "
+      "after a kidnapping; writes poses.csv (pose, state, confidence, standard deviations per "
+      "scan), trajectory.txt (TUM, the localized scans), localization.png and report.json to "
+      "--out");
+  sub_->add_option("--session", session_, "Session file (.tsm) whose map to localize in")
+      ->required();
+  input_.add_options(*sub_);
+  sub_->add_option("--initial-pose", initial_pose_,
+                   "X,Y,THETA (m, m, rad) of the first scan in the map (default: search)");
+  sub_->add_option("--out", out_, "Output folder")->capture_default_str();
+  sub_->add_option(
+      "--relations", relations_,
+      "Score the localized trajectory against a relations file (Kummerle et al. 2009)");
+  sub_->add_option("--time-offset", time_offset_s_,
+                   "Seconds added to the log's stamps to reach the relations' time base")
+      ->capture_default_str();
+  sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
+}
+
+int LocalizeCommand::run() const {
+  if (!input_.given()) return report_error(usage_error("localize needs --log or --bag"));
+  if (Status s = input_.check(); !s) return report_error(s.error());
+  if (!std::isfinite(time_offset_s_)) {
+    return report_error(usage_error("--time-offset must be a finite number of seconds"));
+  }
+  std::optional<Pose2> initial;
+  if (initial_pose_) {
+    Result<Pose2> p = parse_pose(*initial_pose_, "--initial-pose");
+    if (!p) return report_error(p.error());
+    initial = *p;
+  }
+  // Inputs first: a bad session, log or relations file leaves nothing behind.
+  Result<Session> session = read_session(session_);
+  if (!session) return report_error(session.error());
+  Result<LaserLog> log = input_.read(nullptr);
+  if (!log) return report_error(log.error());
+  if (session->scans.empty()) {
+    return report_error(input_error(session_.string() + ": the session holds no scans"));
+  }
+  if (auto d = sensor_difference(session->scans.front().scan, log->scans.front().scan)) {
+    return report_error(
+        input_error(fmt::format("{}: {} in {}", input_.name(), *d, session_.string())));
+  }
+  std::optional<std::vector<Relation>> relations;
+  if (relations_) {
+    Result<std::vector<Relation>> read = read_relations(*relations_);
+    if (!read) return report_error(read.error());
+    relations = std::move(read).value();
+  }
+
+  // The frozen map: the session's nodes at their optimised poses, as the SLAM built its submaps.
+  const auto t0 = std::chrono::steady_clock::now();
+  const slam::LaserSlamOptions slam_options;
+  slam::LocalizerOptions options;
+  options.points = slam_options.points;
+  slam::ProbabilityGrid map =
+      slam::frozen_map(session->scans, session->graph, session->vertex_scan, options.points,
+                       slam_options.submaps.insert, session->map.geometry().resolution_m());
+  if (!map.known_box()) {
+    return report_error(input_error(session_.string() + ": the session's map knows no cell"));
+  }
+  slam::Localizer localizer(std::move(map), options);
+  if (initial) localizer.set_pose(*initial);
+
+  ProgressLine progress(!quiet_ && stderr_is_terminal());
+  std::vector<slam::LocalizedScan> scans;
+  scans.reserve(log->scans.size());
+  std::optional<double> first_pose_after_s;
+  const double t_first = log->scans.front().t_s;
+  for (const StampedScan& scan : log->scans) {
+    scans.push_back(localizer.add_scan(scan));
+    if (!first_pose_after_s && scans.back().state != slam::LocalizationState::kLost) {
+      first_pose_after_s = scan.t_s - t_first;
+    }
+    if (scans.size() % 50 == 0 || scans.size() == log->scans.size()) {
+      progress.show(fmt::format("localize: scan {}/{}  {}", scans.size(), log->scans.size(),
+                                slam::to_string(scans.back().state)),
+                    static_cast<std::int64_t>(scans.size()),
+                    static_cast<std::int64_t>(log->scans.size()), "scans");
+    }
+  }
+  progress.finish();
+  const double wall_s = seconds_since(t0);
+  const double duration_s = data_duration_s(*log);
+
+  std::vector<StampedPose2> trajectory;
+  for (const slam::LocalizedScan& s : scans) {
+    if (s.state != slam::LocalizationState::kLost) trajectory.push_back({s.t_s, s.T_map_robot});
+  }
+  std::optional<RelationMetric> metric;
+  if (relations && !trajectory.empty()) {
+    Result<RelationMetric> scored = relation_metric(trajectory, *relations, time_offset_s_);
+    if (!scored) {
+      Error e = scored.error();
+      e.message = relations_->string() + " against the localized trajectory: " + e.message;
+      return report_error(e);
+    }
+    metric = std::move(scored).value();
+  }
+
+  const slam::LocalizerStats& st = localizer.stats();
+  nlohmann::json options_json = {{"session", session_.string()},
+                                 {"input", input_.name()},
+                                 {"initial_pose", initial_pose_.value_or("")},
+                                 {"time_offset_s", time_offset_s_}};
+  nlohmann::json report = core_report({"localize", std::nullopt, options_json, wall_s, duration_s});
+  report["localization"] = {{"scans", st.scans},
+                            {"localized_scans", st.tracked},
+                            {"first_pose_after_s", first_pose_after_s.value_or(-1.0)},
+                            {"searches", st.searches},
+                            {"relocalizations", st.relocalizations},
+                            {"ambiguous_searches", st.ambiguous},
+                            {"losses", st.losses},
+                            {"tracking_wall_s", st.tracking_s},
+                            {"search_wall_s", st.search_s}};
+  if (metric) report["relations"] = relations_report(*metric, {})["relations"];
+
+  const OccupancyGrid picture_map = localizer.map().to_occupancy_grid(2);
+  RenderLayers layers;
+  layers.map = &picture_map;
+  std::vector<Vec2> path;
+  for (const StampedPose2& p : trajectory) path.push_back(p.pose.translation());
+  if (!path.empty()) layers.robots_m.push_back(path.back());
+  layers.paths_m.push_back(std::move(path));
+  Result<std::string> png = render_png(layers);
+  if (!png) return report_error(png.error());
+  const std::string csv = encode_poses_csv(scans);
+  const std::string tum = encode_tum_trajectory(trajectory);
+  const std::string json = encode_json(report);
+  if (Status s = ensure_directory(out_); !s) return report_error(s.error());
+  const std::vector<PendingFile> files{{out_ / "poses.csv", csv},
+                                       {out_ / "trajectory.txt", tum},
+                                       {out_ / "localization.png", *png},
+                                       {out_ / "report.json", json}};
+  if (Status s = write_files_atomic(files); !s) {
+    return report_error(s.error());
+  }
+  if (!quiet_) {
+    fmt::print(
+        "localize: {} of {} scans localized, first pose after {:.1f} s of data, {} "
+        "relocalizations ({} searches, {} ambiguous), {} losses; {:.1f} s for {:.1f} s of data "
+        "({:.1f}x real time)\n",
+        st.tracked, st.scans, first_pose_after_s.value_or(NAN), st.relocalizations, st.searches,
+        st.ambiguous, st.losses, wall_s, duration_s,
+        realtime_factor(duration_s, wall_s).value_or(0.0));
+    if (metric) print_relations_summary(*metric);
+    fmt::print("outputs: {}/poses.csv trajectory.txt localization.png report.json\n",
+               out_.string());
+  }
+  return kExitOk;
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,169 @@
+#pragma once
+// Localization in a frozen map (issue 16): the robot's pose in a map saved by an earlier SLAM
+// session, tracked scan by scan without building anything new, and found again from nothing
+// (global relocalization) at the start or after a kidnapping.
+//  - Tracking: the last pose moved by the odometry increment is the prior; a correlative search
+//    around it and a sub-cell refinement against the map place the scan (the scan-to-map matching
+//    of local SLAM, Hess et al. 2016 Sec. IV, against the whole map instead of a submap).
+//  - Lost: when the scans stop being explained by the map (their mean probability at the tracked
+//    pose stays below min_tracking_score for lost_after_s of data), the pose is withdrawn.
+//  - Relocalization: the scans since tracking failed, joined into one view of the last view_s
+//    seconds by a small local SLAM, are searched over the whole map and a full turn by branch and
+//    bound (Hess et al. 2016 Sec. V-B; the loop closer's search with the map as one submap). The
+//    best pose is accepted only when it is clearly best: the best pose of any other place (more
+//    than distinct.linear_m or distinct.angular_rad away) must explain the view markedly worse
+//    (ambiguity_ratio). A corridor or a row of equal offices stays ambiguous until the view holds
+//    what tells them apart; the localizer then keeps waiting instead of guessing.
+//
+// Everything runs on the calling thread; the result depends only on the map, the scans and the
+// options.
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessera/core/pose2.hpp"
+#include "tessera/posegraph/pose_graph.hpp"
+#include "tessera/sensors/laser_log.hpp"
+#include "tessera/slam/correlative_scan_matcher.hpp"
+#include "tessera/slam/probability_grid.hpp"
+#include "tessera/slam/scan_points.hpp"
+#include "tessera/slam/scan_refiner.hpp"
+
+namespace tessera::slam {
+
+struct LocalizerOptions {
+  /// How a scan becomes points (the SLAM's defaults, laser_slam.hpp).
+  ScanPointsOptions points{.min_range_m = 0.1, .max_range_m = 20.0, .missing_ray_length_m = 5.0};
+  /// Tracking: the correlative search around the odometry prior, then the refinement (local
+  /// SLAM's, laser_slam.hpp).
+  RealTimeMatcherOptions tracking;
+  ScanRefinerOptions refiner{1.0, 3.0, 5.0, 20};
+  /// A scan contradicts the tracked pose when at least min_map_share of its points fall on cells
+  /// the map knows and their mean probability there (each point at the best cell within one cell
+  /// of it) stays below min_tracking_score: they lie in the map's free space, not on its walls
+  /// (walls are near kMaxProbability = 0.9, free space at kMinProbability = 0.1; half way). Points
+  /// beyond the map are no evidence either way: a robot driving where the session never went
+  /// keeps tracking on what it sees of the map and on odometry. min_tracking_score is also the
+  /// confidence (LocalizedScan::score) below which a pose is not to be trusted.
+  double min_tracking_score = 0.5;
+  double min_map_share = 0.3;
+  /// Tracking is lost after this many seconds of data in which every scan contradicted it.
+  double lost_after_s = 1.0;
+
+  /// Relocalization: the view searched is the scans of the last view_s seconds (since tracking
+  /// failed), joined by matching each against the earlier ones (a small local SLAM, inserted as
+  /// view_insert says), reduced to search_points for the search and to refine_voxel_m voxels for
+  /// the refinement. A search runs every search_every_s of data while lost.
+  double view_s = 3.0;
+  RangeInsertOptions view_insert;
+  double search_every_s = 0.5;
+  AdaptiveVoxelFilterOptions search_points{0.3, 150, 15.0};
+  double refine_voxel_m = 0.05;
+  int branch_and_bound_depth = 7;
+  /// In the search, a point beyond the map (on an unknown cell) scores unknown_score: even odds,
+  /// as nothing is known there; points in the map's free space score 0.1, on its walls 0.9. A
+  /// view that sees partly beyond the session's map can still be placed by the part it shares.
+  double unknown_score = 0.5;
+  /// The best pose must reach this score in the search, and after refinement its points on known
+  /// cells (at least min_map_share of them) must fit the map this well (as tracking measures it).
+  double min_relocalize_score = 0.6;
+  /// Another place's best score, above unknown_score, must be at most this share of the best
+  /// pose's: the best pose is clearly better than the next best.
+  double ambiguity_ratio = 0.85;
+  /// Poses further than this from the best one are another place.
+  ExcludedPoses distinct{{}, 1.0, 0.5};
+  /// A pose is accepted when this many searches in a row (search_every_s apart, the view growing)
+  /// placed the view within `agreement` of each other: a look-alike place that wins one search
+  /// rarely wins the next with more of the building in view.
+  int confirmations = 2;
+  SearchWindow agreement{0.2, 0.05};
+};
+
+/// Empty when usable; otherwise names the field and the rule it breaks.
+[[nodiscard]] std::optional<std::string> validate(const LocalizerOptions& o);
+
+enum class LocalizationState {
+  kLost,         // no pose: not yet found, or the scans stopped matching the map
+  kTracking,     // the pose follows the scans
+  kRelocalized,  // found by a global search at this scan (then kTracking)
+};
+
+[[nodiscard]] const char* to_string(LocalizationState state);
+
+/// The localizer's answer for one scan.
+struct LocalizedScan {
+  double t_s = 0.0;
+  LocalizationState state = LocalizationState::kLost;
+  /// T_map_robot; meaningful unless state is kLost.
+  Pose2 T_map_robot;
+  /// Mean probability of the scan's points in the map at the pose (kMinProbability when lost):
+  /// the confidence that the pose explains the scan.
+  double score = 0.0;
+  /// The pose is to be trusted: it has a pose, its score reaches min_tracking_score, and no scan
+  /// since the last one the map explained has contradicted it (right after a kidnapping the
+  /// tracked pose is wrong until the loss is declared; it is not confident meanwhile).
+  bool confident = false;
+  /// The share of the scan's points on cells the map knows (0 when lost): low where the robot
+  /// sees beyond the session's map.
+  double map_share = 0.0;
+  /// Covariance of (x, y, theta) in the map frame from the refinement, as Gauss-Newton gives it:
+  /// the residual variance times the inverse of J^T J. Large along a corridor's axis, where the
+  /// walls do not pin the pose. Zero when lost.
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+};
+
+struct LocalizerStats {
+  int scans = 0;
+  int tracked = 0;          // scans with a pose (tracking or relocalized)
+  int relocalizations = 0;  // global searches that were accepted
+  int searches = 0;         // global searches run
+  int ambiguous = 0;        // searches refused because another place scored nearly as well
+  int losses = 0;           // times tracking was lost after having a pose
+  double tracking_s = 0.0;  // wall time of tracking
+  double search_s = 0.0;    // wall time of global searches
+};
+
+/// Tracks and relocalizes scans in one frozen map.
+class Localizer {
+ public:
+  /// `map`: the frozen map (frozen_map()). Precondition: validate(options) is empty and the map
+  /// knows at least one cell. Cost: the branch-and-bound grids, O(depth * cells).
+  Localizer(ProbabilityGrid map, const LocalizerOptions& options);
+  ~Localizer();
+  Localizer(const Localizer&) = delete;
+  Localizer& operator=(const Localizer&) = delete;
+
+  /// Starts tracking from a known pose instead of searching (an initial pose, as RViz's).
+  void set_pose(const Pose2& T_map_robot);
+
+  /// Localizes the next scan (scans in input order).
+  LocalizedScan add_scan(const StampedScan& scan);
+
+  [[nodiscard]] const LocalizerStats& stats() const;
+  [[nodiscard]] const ProbabilityGrid& map() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// The map a session froze: every node's scan inserted at its optimised pose, in node order, as
+/// submaps are built (insert), at `resolution_m`. `scans` and `T_map_robot` are parallel.
+/// Precondition: equal sizes.
+[[nodiscard]] ProbabilityGrid frozen_map(const std::vector<const StampedScan*>& scans,
+                                         const std::vector<Pose2>& T_map_robot,
+                                         const ScanPointsOptions& points,
+                                         const RangeInsertOptions& insert, double resolution_m);
+
+/// The map a SLAM run froze (LaserSlamResult, or a saved session): the scans of the nodes of
+/// `graph` (vertex_scan >= 0) at their poses. Precondition: vertex_scan has one entry per vertex
+/// and indexes `scans`.
+[[nodiscard]] ProbabilityGrid frozen_map(const std::vector<StampedScan>& scans,
+                                         const posegraph::PoseGraph& graph,
+                                         const std::vector<int>& vertex_scan,
+                                         const ScanPointsOptions& points,
+                                         const RangeInsertOptions& insert, double resolution_m);
+
+}  // namespace tessera::slam

@@ -1,0 +1,387 @@
+// Localization in a frozen map: tracking by scan-to-map matching, loss detection, and global
+// relocalization by branch and bound with an ambiguity test (localizer.hpp; Hess et al. 2016).
+#include "tessera/slam/localizer.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deque>
+
+#include "tessera/core/assert.hpp"
+
+namespace tessera::slam {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Gauss-Newton's covariance at the refined pose: the residual variance times (J^T J)^-1.
+/// `points`: how many residuals there were.
+Eigen::Matrix3d covariance_of(const RefinedPose& refined, std::size_t points) {
+  const double dof = std::max(1.0, static_cast<double>(points) - 3.0);
+  const double variance = refined.final_cost / dof;
+  // A floor on the curvature keeps a direction the map does not pin (a corridor's axis) finite.
+  const Eigen::Matrix3d h = refined.hessian + 1e-9 * Eigen::Matrix3d::Identity();
+  return variance * h.inverse();
+}
+
+}  // namespace
+
+std::optional<std::string> validate(const LocalizerOptions& o) {
+  if (auto p = validate(o.points)) return "points." + *p;
+  if (auto p = validate(o.tracking)) return "tracking." + *p;
+  if (auto p = validate(o.refiner)) return "refiner." + *p;
+  if (auto p = validate(o.view_insert)) return "view_insert." + *p;
+  if (!(o.min_tracking_score > kMinProbability && o.min_tracking_score < kMaxProbability)) {
+    return "min_tracking_score must be in (0.1, 0.9)";
+  }
+  if (!(o.min_map_share > 0.0 && o.min_map_share <= 1.0)) return "min_map_share must be in (0, 1]";
+  if (!(o.lost_after_s >= 0.0)) return "lost_after_s must be >= 0";
+  if (!(o.view_s > 0.0)) return "view_s must be > 0";
+  if (!(o.search_every_s >= 0.0)) return "search_every_s must be >= 0";
+  if (o.search_points.min_num_points < 1 || !(o.search_points.max_length_m > 0.0) ||
+      !(o.search_points.max_range_m > 0.0)) {
+    return "search_points must keep at least one point (> 0 sizes)";
+  }
+  if (!(o.refine_voxel_m >= 0.0)) return "refine_voxel_m must be >= 0";
+  if (o.branch_and_bound_depth < 1 || o.branch_and_bound_depth > 12) {
+    return "branch_and_bound_depth must be in [1, 12]";
+  }
+  if (!(o.min_relocalize_score > kMinProbability && o.min_relocalize_score < kMaxProbability)) {
+    return "min_relocalize_score must be in (0.1, 0.9)";
+  }
+  if (!(o.unknown_score >= kMinProbability && o.unknown_score <= kMaxProbability)) {
+    return "unknown_score must be in [0.1, 0.9]";
+  }
+  if (!(o.ambiguity_ratio > 0.0 && o.ambiguity_ratio <= 1.0)) {
+    return "ambiguity_ratio must be in (0, 1]";
+  }
+  if (o.confirmations < 1) return "confirmations must be >= 1";
+  if (!(o.agreement.linear_m > 0.0) || !(o.agreement.angular_rad > 0.0)) {
+    return "agreement must be > 0";
+  }
+  if (!(o.distinct.linear_m > 0.0) || !(o.distinct.angular_rad > 0.0)) {
+    return "distinct must be > 0";
+  }
+  return std::nullopt;
+}
+
+const char* to_string(LocalizationState state) {
+  switch (state) {
+    case LocalizationState::kLost:
+      return "lost";
+    case LocalizationState::kTracking:
+      return "tracking";
+    case LocalizationState::kRelocalized:
+      return "relocalized";
+  }
+  return "?";
+}
+
+struct Localizer::Impl {
+  /// A scan of the relocalization view: its odometry, its pose in the view's own frame (from
+  /// matching it against the view's earlier scans) and its points.
+  struct ViewScan {
+    double t_s = 0.0;
+    Pose2 odometry;
+    Pose2 T_view_robot;
+    ScanPoints points;
+  };
+
+  Impl(ProbabilityGrid m, const LocalizerOptions& o)
+      : options(o), map(std::move(m)), search(map, o.branch_and_bound_depth, o.unknown_score) {
+    const auto box = map.known_box();
+    known_lo = map.geometry().center_of(box->min);
+    known_hi = map.geometry().center_of(box->max);
+  }
+
+  LocalizerOptions options;
+  ProbabilityGrid map;
+  BranchAndBoundMatcher search;
+  Vec2 known_lo, known_hi;  // the box of the map's known cells: the poses a search tries
+  LocalizerStats stats;
+
+  std::optional<Pose2> pose;  // T_map_robot of the last scan, while there is one
+  Pose2 last_odometry;
+  bool have_odometry = false;
+  std::optional<double> unexplained_since_s;  // first scan of the current run of unexplained ones
+  std::deque<ViewScan> view;                  // the scans since tracking failed (view_s of them)
+  ProbabilityGrid view_grid;                  // the view's scans at their view poses
+  std::optional<double> last_search_s;
+  /// A match of the view that waits for the next searches to agree with it.
+  struct Candidate {
+    Pose2 T_map_view;
+    int matches = 0;
+  };
+  std::optional<Candidate> candidate;
+
+  /// Tracks the scan from the prior; fills `out` (state kTracking). Returns whether the map
+  /// contradicts the pose: enough of the scan falls on known cells, and those points do not land
+  /// on the map's walls.
+  bool track(const Pose2& prior, const std::vector<Vec2>& points, LocalizedScan& out) {
+    const Pose2 start = match_real_time(map, prior, points, options.tracking).T_grid_robot;
+    const RefinedPose refined = refine_scan(map, prior, start, points, options.refiner);
+    out.state = LocalizationState::kTracking;
+    out.T_map_robot = refined.T_grid_robot;
+    out.score = std::clamp(refined.mean_probability, kMinProbability, kMaxProbability);
+    out.covariance = covariance_of(refined, points.size());
+    const MapFit f = fit_of(out.T_map_robot, points);
+    out.map_share = f.map_share;
+    return f.map_share >= options.min_map_share && f.fit < options.min_tracking_score;
+  }
+
+  /// How the map sees points at a pose: the share on known cells and their mean probability, each
+  /// point at the best cell within one cell of it (a return lands on its wall's cell or beside
+  /// it). A scan that sees beyond the map is not evidence against the pose; one whose points lie
+  /// in the map's free space is.
+  struct MapFit {
+    double map_share = 0.0;
+    double fit = 0.0;
+  };
+  [[nodiscard]] MapFit fit_of(const Pose2& T_map_robot, const std::vector<Vec2>& points) const {
+    const GridGeometry& g = map.geometry();
+    int known = 0;
+    double sum = 0.0;
+    for (const Vec2& p : points) {
+      const Cell c = g.cell_at_unchecked(T_map_robot * p);
+      if (!g.contains(c) || !map.known(c)) continue;
+      ++known;
+      float best = 0.0f;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          best = std::max(best, map.probability({c.x + dx, c.y + dy}));
+        }
+      }
+      sum += best;
+    }
+    if (points.empty()) return {};
+    return {static_cast<double>(known) / static_cast<double>(points.size()),
+            sum / std::max(known, 1)};
+  }
+
+  /// Adds a scan to the relocalization view. Odometry alone does not join scans well enough (on
+  /// the Intel log two scans with the same stamp differ by 3 degrees of odometry heading), so the
+  /// view is a small local SLAM: each scan is matched against the view's earlier ones, from the
+  /// odometry prior, as local SLAM matches against its submap.
+  void add_to_view(double t_s, const Pose2& odometry, ScanPoints points) {
+    Pose2 T_view_robot;
+    if (!view.empty()) {
+      const ViewScan& last = view.back();
+      const Pose2 prior = last.T_view_robot * between(last.odometry, odometry);
+      T_view_robot = prior;
+      if (!points.returns_m.empty()) {
+        const Pose2 start =
+            match_real_time(view_grid, prior, points.returns_m, options.tracking).T_grid_robot;
+        T_view_robot =
+            refine_scan(view_grid, prior, start, points.returns_m, options.refiner).T_grid_robot;
+      }
+    }
+    view.push_back({t_s, odometry, T_view_robot, std::move(points)});
+    bool dropped = false;
+    while (view.size() > 1 && t_s - view.front().t_s > options.view_s) {
+      view.pop_front();
+      dropped = true;
+    }
+    const RangeInserter inserter(options.view_insert);
+    if (dropped || view.size() == 1) {
+      const double res = map.geometry().resolution_m();
+      const Pose2& T = view.front().T_view_robot;
+      const int side = static_cast<int>(std::ceil(20.0 / res));
+      view_grid = ProbabilityGrid(GridGeometry({T.x - 10.0, T.y - 10.0}, res, side, side));
+      for (const ViewScan& v : view) inserter.insert(view_grid, v.T_view_robot, v.points);
+    } else {
+      inserter.insert(view_grid, view.back().T_view_robot, view.back().points);
+    }
+  }
+
+  /// The view's points in the frame of its newest scan.
+  [[nodiscard]] std::vector<Vec2> view_points() const {
+    std::vector<Vec2> all;
+    const Pose2 T_now_view = view.back().T_view_robot.inverse();
+    for (const ViewScan& s : view) {
+      const Pose2 T_now_then = T_now_view * s.T_view_robot;
+      for (const Vec2& p : s.points.returns_m) all.push_back(T_now_then * p);
+    }
+    return all;
+  }
+
+  /// The global search over the whole map and a full turn; fills `out` when the best pose is
+  /// good enough and clearly better than every other place's.
+  void relocalize(LocalizedScan& out) {
+    const auto t0 = std::chrono::steady_clock::now();
+    ++stats.searches;
+    const std::vector<Vec2> all = view_points();
+    const std::vector<Vec2> search_points = adaptive_voxel_filter(all, options.search_points);
+    const std::vector<Vec2> refine_points = voxel_filter(all, options.refine_voxel_m);
+    const double res = map.geometry().resolution_m();
+    const Pose2 centre{0.5 * (known_lo.x + known_hi.x), 0.5 * (known_lo.y + known_hi.y), 0.0};
+    const SearchWindow whole{0.5 * std::max(known_hi.x - known_lo.x, known_hi.y - known_lo.y) + res,
+                             kPi};
+    const std::optional<ScanMatch> best =
+        search.match(centre, search_points, whole, options.min_relocalize_score);
+    if (best) {
+      // The refinement may only polish the searched pose (the loop closer's weak ties).
+      const RefinedPose refined = refine_scan(map, best->T_grid_robot, best->T_grid_robot,
+                                              refine_points, {1.0, 1.0, 1.0, 20});
+      const double shift_m =
+          (refined.T_grid_robot.translation() - best->T_grid_robot.translation()).norm();
+      const MapFit f = fit_of(refined.T_grid_robot, refine_points);
+      if (f.map_share >= options.min_map_share && f.fit >= options.min_relocalize_score &&
+          shift_m <= 2.0 * res) {
+        // The runner-up: the best pose of any other place, which must score clearly less, both
+        // counted above what a view that sees nothing of the map scores (unknown_score: "the
+        // robot is somewhere the map does not show" is always an answer).
+        const double floor = options.unknown_score;
+        ExcludedPoses others = options.distinct;
+        others.around = best->T_grid_robot;
+        const std::optional<ScanMatch> runner_up =
+            search.match(centre, search_points, whole,
+                         floor + options.ambiguity_ratio * (best->score - floor), others);
+        // The view's frame in the map, as this match places it: the next search must agree.
+        const Pose2 T_map_view = refined.T_grid_robot * view.back().T_view_robot.inverse();
+        bool agrees = false;
+        if (!runner_up && candidate) {
+          const Pose2 d =
+              between(candidate->T_map_view * view.back().T_view_robot, refined.T_grid_robot);
+          agrees = std::hypot(d.x, d.y) <= options.agreement.linear_m &&
+                   std::abs(d.theta) <= options.agreement.angular_rad;
+        }
+        if (runner_up) {
+          ++stats.ambiguous;
+        } else if (agrees) {
+          candidate->T_map_view = T_map_view;
+          ++candidate->matches;
+        } else {
+          candidate = Candidate{T_map_view, 1};
+        }
+        if (!runner_up && candidate->matches >= options.confirmations) {
+          ++stats.relocalizations;
+          out.state = LocalizationState::kRelocalized;
+          out.T_map_robot = refined.T_grid_robot;
+          out.score = std::clamp(refined.mean_probability, kMinProbability, kMaxProbability);
+          out.map_share = f.map_share;
+          out.covariance = covariance_of(refined, refine_points.size());
+        }
+      }
+    }
+    stats.search_s += seconds_since(t0);
+  }
+
+  LocalizedScan add_scan(const StampedScan& scan) {
+    ++stats.scans;
+    LocalizedScan out;
+    out.t_s = scan.t_s;
+    out.score = kMinProbability;
+    const ScanPoints points = scan_to_points(scan.scan, scan.laser_in_robot, options.points);
+    const Pose2 increment = have_odometry ? between(last_odometry, scan.odometry) : Pose2{};
+    last_odometry = scan.odometry;
+    have_odometry = true;
+
+    if (pose && !points.returns_m.empty()) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const bool contradicted = track(*pose * increment, points.returns_m, out);
+      stats.tracking_s += seconds_since(t0);
+      pose = out.T_map_robot;
+      if (!contradicted) {
+        unexplained_since_s.reset();
+        view.clear();
+        candidate.reset();
+      } else if (!unexplained_since_s) {
+        unexplained_since_s = scan.t_s;
+      }
+      if (unexplained_since_s && scan.t_s - *unexplained_since_s >= options.lost_after_s) {
+        // The pose stopped explaining the scans: a kidnapping, or the map is not this place.
+        pose.reset();
+        ++stats.losses;
+        out = LocalizedScan{};
+        out.t_s = scan.t_s;
+        out.score = kMinProbability;
+      }
+    } else if (pose) {
+      pose = *pose * increment;  // nothing to match: odometry carries the pose
+      out.state = LocalizationState::kTracking;
+      out.T_map_robot = *pose;
+    }
+
+    if (!pose || unexplained_since_s) {
+      add_to_view(scan.t_s, scan.odometry, points);
+    }
+    if (!pose && !view.empty() &&
+        (!last_search_s || scan.t_s - *last_search_s >= options.search_every_s ||
+         scan.t_s < *last_search_s)) {
+      last_search_s = scan.t_s;
+      relocalize(out);
+      if (out.state == LocalizationState::kRelocalized) {
+        pose = out.T_map_robot;
+        view.clear();
+        candidate.reset();
+        unexplained_since_s.reset();
+      }
+    }
+    if (out.state != LocalizationState::kLost) ++stats.tracked;
+    out.confident = out.state != LocalizationState::kLost && !unexplained_since_s &&
+                    out.score >= options.min_tracking_score;
+    return out;
+  }
+};
+
+Localizer::Localizer(ProbabilityGrid map, const LocalizerOptions& options) {
+  TESSERA_ASSERT(!validate(options));
+  TESSERA_ASSERT(map.known_box().has_value());
+  impl_ = std::make_unique<Impl>(std::move(map), options);
+}
+
+Localizer::~Localizer() = default;
+
+void Localizer::set_pose(const Pose2& T_map_robot) {
+  impl_->pose = T_map_robot;
+  impl_->view.clear();
+  impl_->candidate.reset();
+  impl_->unexplained_since_s.reset();
+}
+
+LocalizedScan Localizer::add_scan(const StampedScan& scan) { return impl_->add_scan(scan); }
+
+const LocalizerStats& Localizer::stats() const { return impl_->stats; }
+
+const ProbabilityGrid& Localizer::map() const { return impl_->map; }
+
+ProbabilityGrid frozen_map(const std::vector<const StampedScan*>& scans,
+                           const std::vector<Pose2>& T_map_robot, const ScanPointsOptions& points,
+                           const RangeInsertOptions& insert, double resolution_m) {
+  TESSERA_ASSERT(scans.size() == T_map_robot.size());
+  ProbabilityGrid map;
+  const RangeInserter inserter(insert);
+  for (std::size_t i = 0; i < scans.size(); ++i) {
+    const Pose2& T = T_map_robot[i];
+    if (map.geometry().width() == 0) {
+      // On the lattice of whole cells from the map frame's origin, as LaserSlam's map.
+      const int side = static_cast<int>(std::ceil(20.0 / resolution_m));
+      map = ProbabilityGrid(GridGeometry({std::floor((T.x - 10.0) / resolution_m) * resolution_m,
+                                          std::floor((T.y - 10.0) / resolution_m) * resolution_m},
+                                         resolution_m, side, side));
+    }
+    inserter.insert(map, T, scan_to_points(scans[i]->scan, scans[i]->laser_in_robot, points));
+  }
+  return map;
+}
+
+ProbabilityGrid frozen_map(const std::vector<StampedScan>& scans, const posegraph::PoseGraph& graph,
+                           const std::vector<int>& vertex_scan, const ScanPointsOptions& points,
+                           const RangeInsertOptions& insert, double resolution_m) {
+  TESSERA_ASSERT(vertex_scan.size() == graph.poses.size());
+  std::vector<const StampedScan*> node_scans;
+  std::vector<Pose2> node_poses;
+  for (std::size_t v = 0; v < vertex_scan.size(); ++v) {
+    if (vertex_scan[v] < 0) continue;
+    node_scans.push_back(&scans[static_cast<std::size_t>(vertex_scan[v])]);
+    node_poses.push_back(graph.poses[v]);
+  }
+  return frozen_map(node_scans, node_poses, points, insert, resolution_m);
+}
+
+}  // namespace tessera::slam

@@ -1,0 +1,124 @@
+// tessera localize end to end (issue 16): a session of the first two minutes of the real Intel
+// log, and the robot found in it again with no initial pose half a minute in; bad input (a
+// session of another laser, a damaged session, a window without scans) is one line, exit 2 or 3,
+// and nothing written.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_run.hpp"
+#include "support/data.hpp"
+#include "tessera/eval/relation_metric.hpp"
+#include "tessera/io/tum_trajectory.hpp"
+
+namespace tessera {
+namespace {
+
+using support::read_bytes;
+using support::run_cli;
+using support::TempDir;
+using support::write_bytes;
+using ::testing::HasSubstr;
+
+std::filesystem::path intel_log() {
+  return support::data_path("laser/intel/intel-raw-first5505-sot.clf");
+}
+
+// The first 120 s of Intel mapped and saved, shared by the tests.
+const std::filesystem::path& intel_session() {
+  static const TempDir dir;
+  static const bool ran = [] {
+    const auto r =
+        run_cli("slam --log " + intel_log().string() + " --to-s 120 --quiet --out " +
+                (dir.path() / "run").string() + " --save " + (dir.path() / "intel.tsm").string());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return true;
+  }();
+  (void)ran;
+  return dir.path();
+}
+
+TEST(CliLocalize, FindsTheRobotInASavedSessionWithNoInitialPose) {
+  TESSERA_REQUIRE_DATA(intel_log());
+  const auto& session = intel_session();
+  const TempDir out;
+  const auto r =
+      run_cli("localize --session " + (session / "intel.tsm").string() + " --log " +
+              intel_log().string() + " --from-s 30 --to-s 60 --out " + out.path().string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("localize: "));
+  const nlohmann::json report = nlohmann::json::parse(read_bytes(out.path() / "report.json"));
+  EXPECT_EQ(report["command"], "localize");
+  const nlohmann::json& loc = report["localization"];
+  EXPECT_LE(loc["first_pose_after_s"].get<double>(), 5.0);
+  EXPECT_GE(loc["localized_scans"].get<double>(), 0.8 * loc["scans"].get<double>());
+  EXPECT_TRUE(std::filesystem::exists(out.path() / "localization.png"));
+
+  // Every localized pose is where the session's own SLAM put the robot at that stamp.
+  const Result<std::vector<StampedPose2>> mapped =
+      read_tum_trajectory(session / "run" / "trajectory.txt");
+  const Result<std::vector<StampedPose2>> localized =
+      read_tum_trajectory(out.path() / "trajectory.txt");
+  ASSERT_TRUE(mapped.ok() && localized.ok());
+  ASSERT_FALSE(localized->empty());
+  std::vector<StampedPose2> sorted = *mapped;
+  std::sort(sorted.begin(), sorted.end(),
+            [](const StampedPose2& a, const StampedPose2& b) { return a.t_s < b.t_s; });
+  double worst_m = 0.0;
+  for (const StampedPose2& p : *localized) {
+    const std::optional<Pose2> there = interpolate_pose(sorted, p.t_s);
+    if (there) worst_m = std::max(worst_m, (there->translation() - p.pose.translation()).norm());
+  }
+  EXPECT_LT(worst_m, 0.1);
+
+  // poses.csv: a header and one line per scan of the window.
+  const std::string csv = read_bytes(out.path() / "poses.csv");
+  EXPECT_THAT(csv, HasSubstr("t_s,state,confident,x_m,y_m,theta_rad,score,map_share,"));
+  EXPECT_EQ(static_cast<int>(std::count(csv.begin(), csv.end(), '\n')),
+            loc["scans"].get<int>() + 1);
+}
+
+TEST(CliLocalize, BadInputIsOneLineAndWritesNothing) {
+  TESSERA_REQUIRE_DATA(intel_log());
+  const auto& session = intel_session();
+  const TempDir dir;
+  const auto out = dir.path() / "out";
+  // A session of a simulated 360-beam lidar, and the Intel log's 180-beam laser.
+  const auto sim =
+      run_cli("slam --builtin office --duration-s 5 --quiet --out " +
+              (dir.path() / "sim").string() + " --save " + (dir.path() / "sim.tsm").string());
+  ASSERT_EQ(sim.exit_code, 0) << sim.output;
+  const auto other_laser =
+      run_cli("localize --session " + (dir.path() / "sim.tsm").string() + " --log " +
+              intel_log().string() + " --to-s 10 --out " + out.string());
+  EXPECT_EQ(other_laser.exit_code, 3) << other_laser.output;
+  EXPECT_THAT(other_laser.output, HasSubstr("is not the session's"));
+  EXPECT_THAT(other_laser.output, HasSubstr(intel_log().string()));
+
+  std::string damaged = read_bytes(session / "intel.tsm");
+  damaged[damaged.size() / 2] = static_cast<char>(damaged[damaged.size() / 2] ^ 0x01);
+  write_bytes(dir.path() / "damaged.tsm", damaged);
+  const auto bad_session = run_cli("localize --session " + (dir.path() / "damaged.tsm").string() +
+                                   " --log " + intel_log().string() + " --out " + out.string());
+  EXPECT_EQ(bad_session.exit_code, 3);
+  EXPECT_THAT(bad_session.output, HasSubstr("damaged.tsm: checksum mismatch"));
+  EXPECT_EQ(read_bytes(dir.path() / "damaged.tsm"), damaged);
+
+  const std::string good = "localize --session " + (session / "intel.tsm").string() + " --log " +
+                           intel_log().string() + " --out " + out.string();
+  const auto empty_window = run_cli(good + " --from-s 5000");
+  EXPECT_EQ(empty_window.exit_code, 3);
+  EXPECT_THAT(empty_window.output, HasSubstr("no scan from 5000 s"));
+  const auto backwards = run_cli(good + " --from-s 50 --to-s 40");
+  EXPECT_EQ(backwards.exit_code, 2);
+  const auto no_log = run_cli("localize --session " + (session / "intel.tsm").string());
+  EXPECT_EQ(no_log.exit_code, 2);
+  EXPECT_THAT(no_log.output, HasSubstr("localize needs --log or --bag"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace tessera

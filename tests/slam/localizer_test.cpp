@@ -1,0 +1,171 @@
+#include "tessera/slam/localizer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/text_world.hpp"
+#include "tessera/core/angle.hpp"
+#include "tessera/sim/builtin_world.hpp"
+#include "tessera/sim/laser_run.hpp"
+
+namespace tessera::slam {
+namespace {
+
+/// A run through the built-in office (0.1 m cells) with a 270-degree lidar, 5 scans per second and
+/// drifting odometry; `seed` draws the start and the noise.
+SimulatedLaserRun office_run(std::uint64_t seed, double duration_s) {
+  const World office = builtin_world("office", 0.1);
+  LaserRunOptions o;
+  o.lidar.beams = 270;
+  o.lidar.fov_rad = deg_to_rad(270.0);
+  o.lidar.max_range_m = 10.0;
+  o.scan_rate_hz = 5.0;
+  o.max_duration_s = duration_s;
+  o.odometry.heading_drift_rad_per_m = 0.02;
+  Result<SimulatedLaserRun> r = simulate_laser_run(office, o, seed);
+  EXPECT_TRUE(r.ok()) << r.error().message;
+  return std::move(r).value();
+}
+
+/// The office mapped by a first robot: its scans at its true poses (a perfect session).
+const ProbabilityGrid& office_map() {
+  static const ProbabilityGrid map = [] {
+    const SimulatedLaserRun run = office_run(3, 0.0);
+    std::vector<const StampedScan*> scans;
+    std::vector<Pose2> poses;
+    for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
+      scans.push_back(&run.log.scans[i]);
+      poses.push_back(run.truth[i].pose);
+    }
+    return frozen_map(scans, poses, LocalizerOptions{}.points, RangeInsertOptions{}, 0.05);
+  }();
+  return map;
+}
+
+struct PoseError {
+  double m = 0.0;
+  double rad = 0.0;
+};
+
+PoseError error_of(const Pose2& estimate, const Pose2& truth) {
+  const Pose2 e = between(truth, estimate);
+  return {std::hypot(e.x, e.y), std::abs(normalize_angle(e.theta))};
+}
+
+TEST(Localizer, TracksARobotFromAKnownPoseWithoutDrift) {
+  const SimulatedLaserRun run = office_run(11, 40.0);
+  const LocalizerOptions options;
+  Localizer localizer(office_map(), options);
+  localizer.set_pose(run.truth.front().pose);
+  double worst_m = 0.0;
+  for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
+    const LocalizedScan s = localizer.add_scan(run.log.scans[i]);
+    ASSERT_NE(s.state, LocalizationState::kLost) << "scan " << i;
+    EXPECT_TRUE(s.confident) << "scan " << i;
+    worst_m = std::max(worst_m, error_of(s.T_map_robot, run.truth[i].pose).m);
+  }
+  // Odometry alone drifts 0.02 rad per metre; the map holds the pose.
+  EXPECT_LT(worst_m, 0.1);
+  EXPECT_EQ(localizer.stats().searches, 0);
+}
+
+TEST(Localizer, FindsARobotWithNoInitialPoseAndIsNeverConfidentlyWrong) {
+  const LocalizerOptions options;
+  int found = 0;
+  for (const std::uint64_t seed : {21, 22, 23, 24}) {
+    const SimulatedLaserRun run = office_run(seed, 15.0);
+    Localizer localizer(office_map(), options);
+    std::optional<double> found_at_s;
+    for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
+      const LocalizedScan s = localizer.add_scan(run.log.scans[i]);
+      if (!s.confident) continue;
+      if (!found_at_s) found_at_s = s.t_s;
+      const PoseError e = error_of(s.T_map_robot, run.truth[i].pose);
+      EXPECT_LT(e.m, 0.1) << "seed " << seed << " scan " << i;
+      EXPECT_LT(e.rad, deg_to_rad(3.0)) << "seed " << seed << " scan " << i;
+    }
+    if (found_at_s && *found_at_s <= 5.0) ++found;
+  }
+  EXPECT_GE(found, 3);
+}
+
+TEST(Localizer, AKidnappedRobotIsLostAndFoundAgain) {
+  // The robot drives 10 s, then its scans are another run's, elsewhere in the office; its
+  // odometry goes on as if nothing happened.
+  const SimulatedLaserRun before = office_run(31, 10.0);
+  const SimulatedLaserRun after = office_run(32, 20.0);
+  const LocalizerOptions options;
+  Localizer localizer(office_map(), options);
+  localizer.set_pose(before.truth.front().pose);
+  for (const StampedScan& scan : before.log.scans) localizer.add_scan(scan);
+  const Pose2 T_odom_jump =
+      before.log.scans.back().odometry * after.log.scans.front().odometry.inverse();
+  const double t0 = before.log.scans.back().t_s + 0.2;
+  // Noticed: the first scan no longer tracked (lost, or found again by a search at once).
+  std::optional<double> noticed_at_s, found_at_s;
+  for (std::size_t i = 0; i < after.log.scans.size(); ++i) {
+    StampedScan scan = after.log.scans[i];
+    scan.t_s += t0;
+    scan.odometry = T_odom_jump * scan.odometry;
+    const LocalizedScan s = localizer.add_scan(scan);
+    if (s.state != LocalizationState::kTracking && !noticed_at_s) noticed_at_s = s.t_s - t0;
+    if (!s.confident) continue;
+    const PoseError e = error_of(s.T_map_robot, after.truth[i].pose);
+    if (e.m < 0.1 && e.rad < deg_to_rad(3.0)) {
+      if (!found_at_s) found_at_s = s.t_s - t0;
+    } else {
+      ADD_FAILURE() << "a confident wrong pose after the kidnapping, scan " << i << ": " << e.m
+                    << " m";
+    }
+  }
+  ASSERT_TRUE(noticed_at_s.has_value());
+  EXPECT_LE(*noticed_at_s, options.lost_after_s + 0.5);
+  ASSERT_TRUE(found_at_s.has_value());
+  EXPECT_LE(*found_at_s, 8.0);
+  EXPECT_GE(localizer.stats().losses, 1);
+  EXPECT_GE(localizer.stats().relocalizations, 1);
+}
+
+TEST(Localizer, ASymmetricRoomIsNeverClaimed) {
+  // A bare rectangle looks the same turned by half a turn: two places explain every scan, so no
+  // search may accept one.
+  std::vector<std::string> rows(40, "#" + std::string(58, '.') + "#");
+  rows.front() = rows.back() = std::string(60, '#');
+  const World room = support::text_world(rows, 0.1);
+  LaserRunOptions o;
+  o.lidar.max_range_m = 10.0;
+  o.scan_rate_hz = 5.0;
+  o.max_duration_s = 20.0;
+  Result<SimulatedLaserRun> run = simulate_laser_run(room, o, 5);
+  ASSERT_TRUE(run.ok()) << run.error().message;
+  std::vector<const StampedScan*> scans;
+  std::vector<Pose2> poses;
+  for (std::size_t i = 0; i < run->log.scans.size(); ++i) {
+    scans.push_back(&run->log.scans[i]);
+    poses.push_back(run->truth[i].pose);
+  }
+  const LocalizerOptions options;
+  Localizer localizer(frozen_map(scans, poses, options.points, {}, 0.05), options);
+  for (const StampedScan& scan : run->log.scans) {
+    EXPECT_EQ(localizer.add_scan(scan).state, LocalizationState::kLost);
+  }
+  EXPECT_GT(localizer.stats().searches, 0);
+  EXPECT_EQ(localizer.stats().ambiguous, localizer.stats().searches);
+}
+
+TEST(Localizer, OptionsOutsideTheirRangeAreNamed) {
+  LocalizerOptions o;
+  EXPECT_FALSE(validate(o).has_value());
+  o.ambiguity_ratio = 1.5;
+  EXPECT_EQ(validate(o).value_or(""), "ambiguity_ratio must be in (0, 1]");
+  o = {};
+  o.min_tracking_score = 0.95;
+  EXPECT_EQ(validate(o).value_or(""), "min_tracking_score must be in (0.1, 0.9)");
+  o = {};
+  o.view_s = 0.0;
+  EXPECT_EQ(validate(o).value_or(""), "view_s must be > 0");
+}
+
+}  // namespace
+}  // namespace tessera::slam

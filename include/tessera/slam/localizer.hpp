@@ -5,8 +5,9 @@
 //  - Tracking: the last pose moved by the odometry increment is the prior; a correlative search
 //    around it and a sub-cell refinement against the map place the scan (the scan-to-map matching
 //    of local SLAM, Hess et al. 2016 Sec. IV, against the whole map instead of a submap).
-//  - Lost: when the scans stop being explained by the map (their mean probability at the tracked
-//    pose stays below min_tracking_score for lost_after_s of data), the pose is withdrawn.
+//  - Lost: when the map contradicts the scans for lost_after_s of data (enough of each scan on
+//    mapped cells, and there in the map's free space instead of on its walls), the pose is
+//    withdrawn. Seeing beyond the map is no contradiction (decision 0024).
 //  - Relocalization: the scans since tracking failed, joined into one view of the last view_s
 //    seconds by a small local SLAM, are searched over the whole map and a full turn by branch and
 //    bound (Hess et al. 2016 Sec. V-B; the loop closer's search with the map as one submap). The

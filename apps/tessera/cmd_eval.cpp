@@ -101,8 +101,8 @@ int EvalCommand::run_relations() const {
   }
   const RelationMetric& m = *metric;
   fmt::print(
-      "relations: {} scored, {} skipped (outside the trajectory); translation {:.4f} +/- {:.4f} "
-      "m, rotation {:.3f} +/- {:.3f} deg\n",
+      "relations: {} scored, {} skipped (outside the trajectory or in its gaps); translation "
+      "{:.4f} +/- {:.4f} m, rotation {:.3f} +/- {:.3f} deg\n",
       m.count, m.skipped, m.trans_mean_m, m.trans_std_m, rad_to_deg(m.rot_mean_rad),
       rad_to_deg(m.rot_std_rad));
 

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "session_map.hpp"
 #include "slam_report.hpp"
-#include "tessera/core/angle.hpp"
 #include "tessera/eval/relation_metric.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/json_file.hpp"
@@ -24,22 +24,6 @@
 
 namespace tessera::cli {
 namespace {
-
-/// Empty when the log's laser is the session's (beams, their angles and range); otherwise what
-/// differs. A map made with one laser cannot be matched with scans of another laid out otherwise.
-std::optional<std::string> sensor_difference(const RangeScan& session, const RangeScan& log) {
-  const auto describe = [](const RangeScan& s) {
-    return fmt::format("{} beams from {:.2f} deg every {:.3f} deg", s.ranges_m.size(),
-                       rad_to_deg(s.angle_min_rad), rad_to_deg(s.angle_increment_rad));
-  };
-  if (session.ranges_m.size() != log.ranges_m.size() ||
-      std::abs(session.angle_min_rad - log.angle_min_rad) > 1e-4 ||
-      std::abs(session.angle_increment_rad - log.angle_increment_rad) > 1e-6) {
-    return fmt::format("its laser ({}) is not the session's ({})", describe(log),
-                       describe(session));
-  }
-  return std::nullopt;
-}
 
 /// One line per scan: its stamp, state, whether the pose is to be trusted, the pose, its score,
 /// the share of the scan on the map, and the pose's standard deviations.
@@ -73,7 +57,7 @@ LocalizeCommand::LocalizeCommand(CLI::App& app) {
       ->required();
   input_.add_options(*sub_);
   sub_->add_option("--initial-pose", initial_pose_,
-                   "X,Y,THETA (m, m, rad) of the first scan in the map (default: search)");
+                   "X,Y[,THETA] (m, m, rad) of the first scan in the map (default: search)");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
   sub_->add_option(
       "--relations", relations_,
@@ -104,9 +88,8 @@ int LocalizeCommand::run() const {
   if (session->scans.empty()) {
     return report_error(input_error(session_.string() + ": the session holds no scans"));
   }
-  if (auto d = sensor_difference(session->scans.front().scan, log->scans.front().scan)) {
-    return report_error(
-        input_error(fmt::format("{}: {} in {}", input_.name(), *d, session_.string())));
+  if (Status s = check_same_laser(*session, *log, session_.string(), input_.name()); !s) {
+    return report_error(s.error());
   }
   std::optional<std::vector<Relation>> relations;
   if (relations_) {
@@ -117,16 +100,10 @@ int LocalizeCommand::run() const {
 
   // The frozen map: the session's nodes at their optimised poses, as the SLAM built its submaps.
   const auto t0 = std::chrono::steady_clock::now();
-  const slam::LaserSlamOptions slam_options;
-  slam::LocalizerOptions options;
-  options.points = slam_options.points;
-  slam::ProbabilityGrid map =
-      slam::frozen_map(session->scans, session->graph, session->vertex_scan, options.points,
-                       slam_options.submaps.insert, session->map.geometry().resolution_m());
-  if (!map.known_box()) {
-    return report_error(input_error(session_.string() + ": the session's map knows no cell"));
-  }
-  slam::Localizer localizer(std::move(map), options);
+  const slam::LocalizerOptions options;
+  Result<slam::ProbabilityGrid> map = session_frozen_map(*session, options, session_.string());
+  if (!map) return report_error(map.error());
+  slam::Localizer localizer(std::move(map).value(), options);
   if (initial) localizer.set_pose(*initial);
 
   ProgressLine progress(!quiet_ && stderr_is_terminal());

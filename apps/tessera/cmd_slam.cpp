@@ -76,8 +76,12 @@ int SlamCommand::run() const {
     return report_error(usage_error("give --log or --bag, or --world, not both"));
   }
   if (Status s = input_.check(); !s) return report_error(s.error());
-  if (!input_.given() && relations_) {
-    return report_error(usage_error("--relations scores a log: it needs --log or --bag"));
+  if (!input_.given() && (relations_ || resume_)) {
+    return report_error(usage_error(
+        fmt::format("{} needs --log or --bag", relations_ ? "--relations" : "--resume")));
+  }
+  if (initial_pose_ && !resume_) {
+    return report_error(usage_error("--initial-pose places a resumed log: it needs --resume"));
   }
   slam::LaserSlamOptions options;
   options.loop_closure = !no_loop_closure_;
@@ -110,8 +114,16 @@ int SlamCommand::run() const {
     }
     simulated = std::move(run).value();
   }
-  const LaserLog& log = simulated ? simulated->log : *read_log;
   options.map_resolution_m = cell_m_ ? *cell_m_ : world ? world->geometry().resolution_m() : 0.05;
+  std::vector<slam::TrajectoryStart> starts;  // --resume: the session's scans, then the log's
+  nlohmann::json resumed;
+  if (resume_) {
+    Result<Resumed> r = resume_session(std::move(*read_log), options, resumed);
+    if (!r) return report_error(r.error());
+    read_log = std::move(r->log);
+    starts = std::move(r->starts);
+  }
+  const LaserLog& log = simulated ? simulated->log : *read_log;
   if (auto problem = slam::validate(options)) return report_error(usage_error(*problem));
   const std::string input_name = input_.given() ? input_.name() : world->name();
   std::optional<std::vector<Relation>> relations;
@@ -132,7 +144,7 @@ int SlamCommand::run() const {
                   p.scans_done, p.scans_total, "scans");
   };
   const auto t0 = std::chrono::steady_clock::now();
-  Result<slam::LaserSlamResult> result = run_laser_slam_served(log, options, *recording);
+  Result<slam::LaserSlamResult> result = run_laser_slam_served(log, starts, options, *recording);
   progress.finish();
   const double wall_s = seconds_since(t0);
   if (!result) {
@@ -166,6 +178,7 @@ int SlamCommand::run() const {
                              report["options"], wall_s, duration_s}));
   if (relations_) report["options"]["relations"] = relations_->string();
   if (input_.bag) report["bag"] = bag_report;
+  if (resume_) report["resume"] = resumed;
   // A simulated run: its ATE of SLAM, local SLAM and odometry against the truth, and the map
   // against the world, aligned as the ATE aligns the trajectory.
   std::optional<DriftCorrectionScore> score;
@@ -193,7 +206,7 @@ int SlamCommand::run() const {
       !s) {
     return report_error(s.error());
   }
-  if (Status s = save_session(log, r); !s) return report_error(s.error());
+  if (Status s = save_session(log, starts, r); !s) return report_error(s.error());
   if (MessageSink* file = recording->file_sink()) recording->note(record_laser_slam(*file, log, r));
   if (MessageSink* live = recording->live_sink()) {
     recording->note(record_laser_slam_result(*live, r));

@@ -198,10 +198,23 @@ class SlamCommand : public Command {
   std::uint32_t domain_ = 0;
   bool network_ = false;
   double idle_exit_s_ = 0.0;
-  // --save FILE.tsm: the session (cmd_session.cpp).
+  // --save FILE.tsm: the session; --resume FILE.tsm: continue one (cmd_session.cpp).
   void add_session_options();
-  [[nodiscard]] Status save_session(const LaserLog& log, const slam::LaserSlamResult& r) const;
+  [[nodiscard]] Status save_session(const LaserLog& log,
+                                    const std::vector<slam::TrajectoryStart>& starts,
+                                    const slam::LaserSlamResult& r) const;
+  /// The resumed session's scans with `log` after them as a new trajectory, started where the
+  /// session's map places the log (--initial-pose, or found by relocalization), and the
+  /// session's SLAM settings in `options`. `report` gets what was resumed and how it was placed.
+  struct Resumed {
+    LaserLog log;
+    std::vector<slam::TrajectoryStart> starts;
+  };
+  [[nodiscard]] Result<Resumed> resume_session(LaserLog log, slam::LaserSlamOptions& options,
+                                               nlohmann::json& report) const;
   std::optional<std::filesystem::path> save_;
+  std::optional<std::filesystem::path> resume_;
+  std::optional<std::string> initial_pose_;  // --resume: "X,Y,THETA" of the log's first scan
 };
 
 /// tessera session export: a saved session's map, pose graph and trajectory as files

@@ -6,16 +6,22 @@
 
 namespace tessera::cli {
 
-Result<slam::LaserSlamResult> run_laser_slam_served(const LaserLog& log,
-                                                    const slam::LaserSlamOptions& options,
-                                                    Recording& recording) {
+Result<slam::LaserSlamResult> run_laser_slam_served(
+    const LaserLog& log, const std::vector<slam::TrajectoryStart>& starts,
+    const slam::LaserSlamOptions& options, Recording& recording) {
   MessageSink* live = recording.live_sink();
-  if (!live || log.scans.empty()) return slam::run_laser_slam(log, options);
+  if (!live || log.scans.empty()) return slam::run_laser_slam(log, options, starts);
   slam::LaserSlam slam(options);
   SlamLiveRecorder recorder(*live);
   const int total = static_cast<int>(log.scans.size());
   auto last_map = std::chrono::steady_clock::now();
-  for (const StampedScan& scan : log.scans) {
+  auto next_start = starts.begin();
+  for (int i = 0; i < total; ++i) {
+    const StampedScan& scan = log.scans[static_cast<std::size_t>(i)];
+    if (next_start != starts.end() && next_start->first_scan == i) {
+      if (Status s = slam.start_trajectory(next_start->T_map_robot); !s) return s.error();
+      ++next_start;
+    }
     if (Status s = slam.add_scan(scan, total); !s) return s.error();
     const bool with_map = std::chrono::steady_clock::now() - last_map > std::chrono::seconds(1);
     if (with_map) last_map = std::chrono::steady_clock::now();

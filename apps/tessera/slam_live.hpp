@@ -7,11 +7,12 @@
 
 namespace tessera::cli {
 
-/// slam::run_laser_slam, or, when `recording` serves a live view, the same loop with the current
-/// estimate published after every scan (record/slam_recording.hpp's SlamLiveRecorder) and the map
-/// about once a second of wall time (a map build costs what the final one does). The results are
-/// the same either way.
+/// slam::run_laser_slam (with a new trajectory at each of `starts`), or, when `recording` serves a
+/// live view, the same loop with the current estimate published after every scan
+/// (record/slam_recording.hpp's SlamLiveRecorder) and the map about once a second of wall time (a
+/// map build costs what the final one does). The results are the same either way.
 [[nodiscard]] Result<slam::LaserSlamResult> run_laser_slam_served(
-    const LaserLog& log, const slam::LaserSlamOptions& options, Recording& recording);
+    const LaserLog& log, const std::vector<slam::TrajectoryStart>& starts,
+    const slam::LaserSlamOptions& options, Recording& recording);
 
 }  // namespace tessera::cli

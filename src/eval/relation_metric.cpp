@@ -38,7 +38,8 @@ std::string seconds(double t_s) {
 
 }  // namespace
 
-std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted, double t_s) {
+std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted, double t_s,
+                                      double max_gap_s) {
   if (sorted.empty() || !(t_s >= sorted.front().t_s) || !(t_s <= sorted.back().t_s)) {
     return std::nullopt;
   }
@@ -48,12 +49,13 @@ std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted, d
   if (hi->t_s == t_s) return hi->pose;
   // Here sorted.front().t_s < t_s < hi->t_s, so hi has a predecessor and the interval is not empty.
   const auto lo = std::prev(hi);
+  if (hi->t_s - lo->t_s > max_gap_s) return std::nullopt;
   return interpolate(lo->pose, hi->pose, (t_s - lo->t_s) / (hi->t_s - lo->t_s));
 }
 
 Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajectory,
-                                       const std::vector<Relation>& relations,
-                                       double time_offset_s) {
+                                       const std::vector<Relation>& relations, double time_offset_s,
+                                       double max_gap_s) {
   TESSERA_ASSERT(std::isfinite(time_offset_s));
   if (trajectory.empty()) return input_error("the trajectory has no poses");
   if (relations.empty()) return input_error("there are no relations to score");
@@ -69,8 +71,8 @@ Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajecto
   m.trajectory_end_s = sorted.back().t_s;
   std::vector<double> trans_m, trans_sq_m2, rot_rad, rot_sq_rad2;
   for (const Relation& rel : relations) {
-    const std::optional<Pose2> x1 = interpolate_pose(sorted, rel.t1_s);
-    const std::optional<Pose2> x2 = interpolate_pose(sorted, rel.t2_s);
+    const std::optional<Pose2> x1 = interpolate_pose(sorted, rel.t1_s, max_gap_s);
+    const std::optional<Pose2> x2 = interpolate_pose(sorted, rel.t2_s, max_gap_s);
     if (!x1 || !x2) {
       ++m.skipped;
       continue;

@@ -1,8 +1,10 @@
 // Session files (io/session_file.hpp; the layout: docs/session-format.md).
 #include "tessera/io/session_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -233,6 +235,13 @@ std::string encode_session(const Session& s) {
   put_string(options, s.options_yaml);
   put_record(out, "OPTS", options);
   put_record(out, "SCAN", scans_payload(s.scans));
+  std::string starts;
+  put(starts, static_cast<std::uint64_t>(s.trajectory_starts.size()));
+  for (const SessionTrajectoryStart& t : s.trajectory_starts) {
+    put(starts, static_cast<std::uint64_t>(t.first_scan));
+    put_pose(starts, t.T_map_robot);
+  }
+  put_record(out, "STRT", starts);
   std::string trajectory;
   put(trajectory, static_cast<std::uint64_t>(s.trajectory.size()));
   for (const StampedPose2& p : s.trajectory) {
@@ -294,6 +303,7 @@ Result<Session> decode_session(std::string_view bytes, const std::string& name) 
   }
 
   Session s;
+  s.format_version = version;
   std::optional<std::string> problem;
   const auto parse = [&](const char* tag, auto&& read) {
     if (problem) return;
@@ -315,9 +325,31 @@ Result<Session> decode_session(std::string_view bytes, const std::string& name) 
       p.pose = f.pose("pose");
     }
   });
+  // Version 1 had one trajectory per session and no STRT record.
+  if (records.contains("STRT")) {
+    parse("STRT", [&](Fields& f) {
+      s.trajectory_starts.resize(f.count("trajectory count", 32));
+      for (SessionTrajectoryStart& t : s.trajectory_starts) {
+        const auto first = f.get<std::uint64_t>("first scan");
+        t.first_scan =
+            static_cast<int>(std::min<std::uint64_t>(first, std::numeric_limits<int>::max()));
+        t.T_map_robot = f.pose("start pose");
+      }
+    });
+  } else if (version >= 2) {
+    return error("no STRT record");
+  }
   parse("GRPH", [&](Fields& f) { read_graph(f, s.graph, s.vertex_scan); });
   parse("MAP ", [&](Fields& f) { read_map(f, s.map); });
   if (problem) return error(*problem);
+  for (std::size_t k = 0; k < s.trajectory_starts.size(); ++k) {
+    const int first = s.trajectory_starts[k].first_scan;
+    if (first < 1 || first >= static_cast<int>(s.scans.size()) ||
+        (k > 0 && first <= s.trajectory_starts[k - 1].first_scan)) {
+      return error("trajectory " + std::to_string(k + 2) + " starts at scan " +
+                   std::to_string(first) + ", not at a scan after the first in order");
+    }
+  }
   if (s.trajectory.size() != s.scans.size()) {
     return error(std::to_string(s.trajectory.size()) + " trajectory poses for " +
                  std::to_string(s.scans.size()) + " scans");

@@ -10,6 +10,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <string>
 
 #include "tessera/core/rng.hpp"
 
@@ -124,6 +125,7 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
   if (auto p = validate(o.loop_sigmas, "loop_sigmas")) return p;
   if (!(o.loop_hessian_scale >= 0.0)) return "loop_hessian_scale must be >= 0";
   if (!(o.huber_scale > 0.0)) return "huber_scale must be > 0";
+  if (auto p = validate(o.start_sigmas, "start_sigmas")) return p;
   if (!(o.map_resolution_m > 0.0)) return "map_resolution_m must be > 0";
   if (auto p = validate(o.map_insert)) return "map_insert." + *p;
   return std::nullopt;
@@ -176,6 +178,12 @@ struct LaserSlam::Impl {
   Pose2 last_odometry;
   Pose2 last_T_local;
   double last_t_s = 0.0;
+  /// start_trajectory's pose for the next scan, and the id of the first submap of the current
+  /// trajectory (submaps of different trajectories are not joined by the path).
+  // (A flag and a plain pose: see MotionFilter on GCC 12's false maybe-uninitialized.)
+  bool has_pending_start = false;
+  Pose2 pending_start;
+  int trajectory_first_submap = 0;
   int nodes_since_optimization = 0;
   int loop_constraints_since_optimization = 0;
   std::uint64_t poses_version = 0;  // counts optimisations: node poses change only there
@@ -447,9 +455,15 @@ struct LaserSlam::Impl {
     ScanPoints points = scan_to_points(scan.scan, scan.laser_in_robot, options.points);
     const std::vector<Vec2> matching = voxel_filter(points.returns_m, options.matching_voxel_m);
 
-    // Prior: the last pose moved by the odometry increment (file order, whatever the stamps).
+    // Prior: the last pose moved by the odometry increment (file order, whatever the stamps). The
+    // first scan of a new trajectory is where start_trajectory() put it, in the local frame as
+    // the graph now places it.
+    const bool starts_trajectory = has_pending_start;
     Pose2 T_local = scan.odometry;
-    if (scan_index > 0) {
+    if (starts_trajectory) {
+      T_local = local_to_global().inverse() * pending_start;
+      has_pending_start = false;
+    } else if (scan_index > 0) {
       if (scan.t_s < last_t_s) ++stats.backward_stamps;
       T_local = last_T_local * between(last_odometry, scan.odometry);
     }
@@ -482,15 +496,16 @@ struct LaserSlam::Impl {
     // The step from the previous node: it lengthens the path and loosens the local constraints
     // (a scan matched a metre after the last one is less certain than one matched 0.2 m after it).
     const double step_m =
-        nodes.empty() ? 0.0
-                      : (T_local.translation() - nodes.back().T_local_robot.translation()).norm();
+        nodes.empty() || starts_trajectory
+            ? 0.0
+            : (T_local.translation() - nodes.back().T_local_robot.translation()).norm();
     travel_m += step_m;
     for (int id = submaps_before; id < submaps.size(); ++id) {
       SubmapRecord record;
       record.travel_first_m = travel_m;
       record.vertex = add_vertex(correction * submaps.submap(id).local_pose(), -1);
       submap_links.emplace_back();
-      if (id > 0) {
+      if (id > trajectory_first_submap) {
         link_submaps(id - 1, id,
                      travel_m - submap_records[static_cast<std::size_t>(id - 1)].travel_first_m);
       }
@@ -511,7 +526,9 @@ struct LaserSlam::Impl {
                              between(submaps.submap(id).local_pose(), T_local), submap_information,
                              false});
     }
-    if (!nodes.empty()) {
+    if (starts_trajectory && !nodes.empty()) {
+      tie_to_nearest_node(node);
+    } else if (!nodes.empty()) {
       const Node& previous = nodes.back();
       graph.edges.push_back(
           {previous.vertex, node.vertex, between(previous.T_local_robot, T_local),
@@ -544,6 +561,40 @@ struct LaserSlam::Impl {
       if (Status s = optimize_graph(false); !s) return s;
     }
     report(scan_index + 1, scans_total);
+    return Ok{};
+  }
+
+  /// The first node of a new trajectory: a constraint to the nearest node of the earlier ones,
+  /// where start_trajectory() placed it, and its submaps joined to that node's as if by a loop
+  /// closure, so that the loop searches around it start from a small window.
+  void tie_to_nearest_node(const Node& node) {
+    const Vec2 at = global_pose(node.vertex).translation();
+    const Node* nearest = &nodes.front();
+    for (const Node& n : nodes) {
+      if ((global_pose(n.vertex).translation() - at).norm() <
+          (global_pose(nearest->vertex).translation() - at).norm()) {
+        nearest = &n;
+      }
+    }
+    graph.edges.push_back({nearest->vertex, node.vertex,
+                           between(global_pose(nearest->vertex), global_pose(node.vertex)),
+                           information_of(options.start_sigmas), false});
+    for (const int a : nearest->submaps) {
+      for (const int b : node.submaps) link_submaps(a, b, 0.0);
+    }
+  }
+
+  Status start_trajectory(const Pose2& T_map_robot) {
+    if (!nodes.empty()) {
+      if (stats.loop_closures > 0) {
+        if (Status s = optimize_graph(true); !s) return s;
+      }
+      for (const int id : submaps.finish_all()) on_submap_finished(id);
+    }
+    has_pending_start = true;
+    pending_start = T_map_robot;
+    trajectory_first_submap = submaps.size();
+    filter.reset();
     return Ok{};
   }
 
@@ -633,6 +684,10 @@ Status LaserSlam::add_scan(const StampedScan& scan, int scans_total) {
   return impl_->add_scan(scan, scans_total);
 }
 
+Status LaserSlam::start_trajectory(const Pose2& T_map_robot) {
+  return impl_->start_trajectory(T_map_robot);
+}
+
 Pose2 LaserSlam::latest_pose() const {
   TESSERA_ASSERT(!impl_->scans.empty());
   return impl_->scan_pose(impl_->scans.size() - 1);
@@ -645,13 +700,29 @@ Result<LaserSlamResult> LaserSlam::finish() {
   return impl_->finish();
 }
 
-Result<LaserSlamResult> run_laser_slam(const LaserLog& log, const LaserSlamOptions& options) {
+Result<LaserSlamResult> run_laser_slam(const LaserLog& log, const LaserSlamOptions& options,
+                                       const std::vector<TrajectoryStart>& starts) {
   if (auto problem = validate(options)) return usage_error("laser SLAM options: " + *problem);
   if (log.scans.empty()) return input_error("laser SLAM: the log has no scans");
-  LaserSlam slam(options);
   const int total = static_cast<int>(log.scans.size());
-  for (const StampedScan& scan : log.scans) {
-    if (Status s = slam.add_scan(scan, total); !s) return s.error();
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const int first = starts[k].first_scan;
+    if (first < 1 || first >= total || (k > 0 && first <= starts[k - 1].first_scan)) {
+      return input_error("laser SLAM: trajectory start " + std::to_string(k + 1) + " is at scan " +
+                         std::to_string(first) + "; expected scans 1-" + std::to_string(total - 1) +
+                         " in increasing order");
+    }
+  }
+  LaserSlam slam(options);
+  auto next_start = starts.begin();
+  for (int i = 0; i < total; ++i) {
+    if (next_start != starts.end() && next_start->first_scan == i) {
+      if (Status s = slam.start_trajectory(next_start->T_map_robot); !s) return s.error();
+      ++next_start;
+    }
+    if (Status s = slam.add_scan(log.scans[static_cast<std::size_t>(i)], total); !s) {
+      return s.error();
+    }
   }
   return slam.finish();
 }

@@ -66,6 +66,18 @@ bool ActiveSubmaps::full(const Submap& s) const {
          (options_.travel_per_submap_m > 0.0 && s.travel_m() >= options_.travel_per_submap_m);
 }
 
+std::vector<int> ActiveSubmaps::finish_all() {
+  std::vector<int> finished;
+  for (const int id : active_) {
+    Submap& s = submaps_[static_cast<std::size_t>(id)];
+    if (s.finished()) continue;
+    s.finish();
+    finished.push_back(id);
+  }
+  active_.clear();
+  return finished;
+}
+
 std::optional<int> ActiveSubmaps::matching_id() const {
   if (active_.empty()) return std::nullopt;
   return active_.front();

@@ -48,6 +48,30 @@ TEST(InterpolatePose, ReturnsAPoseStampedExactlyAndNothingOutsideTheSpan) {
   EXPECT_FALSE(interpolate_pose({}, 0.0).has_value());
 }
 
+TEST(InterpolatePose, NothingInAGapWiderThanAsked) {
+  const std::vector<StampedPose2> sorted = {
+      {1.0, {1.0, 0.0, 0.0}}, {2.0, {2.0, 0.0, 0.0}}, {10.0, {9.0, 0.0, 0.0}}};
+  EXPECT_DOUBLE_EQ(interpolate_pose(sorted, 1.5, 5.0)->x, 1.5);
+  EXPECT_FALSE(interpolate_pose(sorted, 6.0, 5.0).has_value());
+  EXPECT_DOUBLE_EQ(interpolate_pose(sorted, 10.0, 5.0)->x, 9.0);  // a pose's own stamp
+  EXPECT_DOUBLE_EQ(interpolate_pose(sorted, 6.0)->x, 5.5);        // no limit asked
+}
+
+TEST(RelationMetric, SkipsRelationsInAStretchTheTrajectoryDoesNotCover) {
+  // A trajectory with a 100 s hole (a resumed session that left part of the log out): the
+  // relation into the hole is skipped, not scored against a straight line across it.
+  std::vector<StampedPose2> trajectory;
+  for (int i = 0; i <= 10; ++i) trajectory.push_back({0.2 * i, {0.1 * i, 0.0, 0.0}});
+  for (int i = 0; i <= 10; ++i) trajectory.push_back({102.0 + 0.2 * i, {5.0, 0.1 * i, 0.0}});
+  const std::vector<Relation> relations = {
+      {0.2, 1.0, {0.4, 0.0, 0.0}}, {50.0, 102.4, {0.0, 0.0, 0.0}}, {102.2, 103.0, {0.0, 0.4, 0.0}}};
+  const Result<RelationMetric> m = relation_metric(trajectory, relations);
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  EXPECT_EQ(m->count, 2u);
+  EXPECT_EQ(m->skipped, 1u);
+  EXPECT_NEAR(m->trans_mean_m, 0.0, 1e-9);
+}
+
 TEST(RelationMetric, ExactTrajectoryScoresZero) {
   std::vector<StampedPose2> truth;
   for (int k = 0; k < 20; ++k) {

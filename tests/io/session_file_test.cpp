@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -105,8 +107,8 @@ TEST(SessionFile, DamagedTruncatedNewerAndForeignFilesAreInputErrorsNamingTheFil
   flipped[200] = static_cast<char>(flipped[200] ^ 0x10);
   EXPECT_THAT(error_of(flipped), HasSubstr("checksum mismatch, the file is damaged"));
   std::string newer = good;
-  newer[8] = 2;  // format version, little-endian u32 after the signature
-  EXPECT_THAT(error_of(newer), HasSubstr("session format 2 is not one this tessera reads"));
+  newer[8] = 3;  // format version, little-endian u32 after the signature
+  EXPECT_THAT(error_of(newer), HasSubstr("session format 3 is not one this tessera reads"));
   EXPECT_THAT(error_of("FLASER 180 1.0 2.0\n"), HasSubstr("not a tessera session"));
 }
 
@@ -120,6 +122,62 @@ TEST(SessionFile, ContentsThatDoNotAgreeAreInputErrors) {
   s = small_session();
   s.trajectory[1].pose.x = std::numeric_limits<double>::infinity();
   EXPECT_THAT(error_of(encode_session(s)), HasSubstr("record TRAJ: pose is not a finite number"));
+  // A trajectory starts at a scan after the first, in order.
+  for (const std::vector<int>& firsts : {std::vector<int>{0}, {3}, {2, 1}, {1, 1}}) {
+    s = small_session();
+    for (const int first : firsts) s.trajectory_starts.push_back({first, {}});
+    EXPECT_THAT(error_of(encode_session(s)), HasSubstr("not at a scan after the first in order"));
+  }
+}
+
+TEST(SessionFile, TrajectoryStartsComeBack) {
+  Session s = small_session();
+  s.trajectory_starts = {{1, {2.5, -1.0, 0.3}}, {2, {0.0, 4.0, -3.0}}};
+  const Result<Session> back = decode_session(encode_session(s), "s.tsm");
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  ASSERT_EQ(back->trajectory_starts.size(), 2u);
+  EXPECT_EQ(back->trajectory_starts[0].first_scan, 1);
+  EXPECT_EQ(back->trajectory_starts[0].T_map_robot.theta, 0.3);
+  EXPECT_EQ(back->trajectory_starts[1].first_scan, 2);
+  EXPECT_EQ(back->trajectory_starts[1].T_map_robot.y, 4.0);
+}
+
+// CRC-32 (IEEE 802.3), bit by bit: the format's checksum, computed here independently.
+std::uint32_t crc32_of(std::string_view bytes) {
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (const char ch : bytes) {
+    crc ^= static_cast<unsigned char>(ch);
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  return ~crc;
+}
+
+TEST(SessionFile, AVersionOneFileReadsAsOneTrajectory) {
+  // Version 1 had no STRT record: drop it, set the version and sign the file again.
+  std::string bytes = encode_session(small_session());
+  const std::size_t strt = bytes.find("STRT");
+  ASSERT_NE(strt, std::string::npos);
+  std::uint64_t length = 0;
+  std::memcpy(&length, bytes.data() + strt + 4, 8);
+  bytes.erase(strt, 12 + length);
+  bytes.resize(bytes.size() - 16);  // the CRC record: tag, length, 4 bytes
+  const auto signed_as = [&](char version) {
+    std::string out = bytes;
+    out[8] = version;
+    const std::uint32_t crc = crc32_of(out);
+    const std::uint64_t four = 4;
+    out += "CRC ";
+    out.append(reinterpret_cast<const char*>(&four), 8);
+    out.append(reinterpret_cast<const char*>(&crc), 4);
+    return out;
+  };
+  const Result<Session> back = decode_session(signed_as(1), "old.tsm");
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  EXPECT_TRUE(back->trajectory_starts.empty());
+  EXPECT_EQ(back->scans.size(), 3u);
+  EXPECT_EQ(back->format_version, 1u);
+  // Version 2 requires the record.
+  EXPECT_THAT(error_of(signed_as(2)), HasSubstr("no STRT record"));
 }
 
 TEST(SessionFile, WrittenAtomicallyAndReadBack) {

@@ -175,6 +175,49 @@ TEST(LaserSlam, RunsAreDeterministic) {
   EXPECT_EQ(a->graph.edges.size(), b->graph.edges.size());
 }
 
+// Issue 16 (a resumed session): the second half of the run comes as another log whose odometry
+// has its own origin. Started where relocalization would put it (a few centimetres off), it
+// builds its own submaps, is joined to the first half by loop closures and ends as near the truth
+// as one uninterrupted run; the jump in odometry between the halves is never taken for motion.
+TEST(LaserSlam, ANewTrajectoryWithItsOwnOdometryOriginJoinsTheMap) {
+  const SimulatedLaserRun& run = office_run();
+  const std::size_t half = run.log.scans.size() / 2;
+  LaserLog log = run.log;
+  const Pose2 T_other_origin{5.0, -3.0, 1.2};
+  for (std::size_t i = half; i < log.scans.size(); ++i) {
+    log.scans[i].odometry = T_other_origin * log.scans[i].odometry;
+  }
+  const Pose2 start = run.truth[half].pose * Pose2{0.04, -0.03, 0.02};
+  const Result<LaserSlamResult> joined =
+      run_laser_slam(log, small_submaps(), {{static_cast<int>(half), start}});
+  const Result<LaserSlamResult> whole = run_laser_slam(run.log, small_submaps());
+  ASSERT_TRUE(joined.ok() && whole.ok());
+  ASSERT_EQ(joined->trajectory.size(), log.scans.size());
+  const double joined_error = mean_position_error(joined->trajectory, run.truth);
+  const double whole_error = mean_position_error(whole->trajectory, run.truth);
+  std::printf("mean position error: one run %.3f m, two trajectories %.3f m\n", whole_error,
+              joined_error);
+  EXPECT_LT(joined_error, 1.2 * whole_error + 0.01);
+  EXPECT_LT(
+      (joined->trajectory[half].pose.translation() - run.truth[half].pose.translation()).norm(),
+      0.1);
+  // The second trajectory's nodes were matched into the first one's submaps.
+  EXPECT_GT(joined->stats.loop_closures, 0);
+  EXPECT_GT(joined->stats.submaps, 0);
+}
+
+TEST(LaserSlam, TrajectoryStartsMustBeScansAfterTheFirstInOrder) {
+  LaserLog log = office_run().log;
+  log.scans.resize(20);
+  for (const std::vector<TrajectoryStart>& starts :
+       {std::vector<TrajectoryStart>{{0, {}}}, {{20, {}}}, {{10, {}}, {5, {}}}}) {
+    const Result<LaserSlamResult> r = run_laser_slam(log, small_submaps(), starts);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().kind, ErrorKind::kInput);
+    EXPECT_THAT(r.error().message, ::testing::HasSubstr("in increasing order"));
+  }
+}
+
 TEST(LaserSlam, ReportsProgressForEveryScan) {
   LaserLog log = office_run().log;
   log.scans.resize(30);

@@ -7,6 +7,7 @@
 // with x(t) the estimated trajectory interpolated linearly in translation and along the shortest
 // arc in rotation; mean and sample standard deviation (n - 1) of t, t^2, r and r^2.
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -46,19 +47,25 @@ struct RelationMetric {
 
 /// The pose of a trajectory at t_s: linear in translation between the poses on either side, along
 /// the shortest arc in heading; a pose stamped exactly t_s is returned as is. nullopt when t_s is
-/// outside [first stamp, last stamp]. Precondition: `sorted` is sorted by t_s (equal stamps
+/// outside [first stamp, last stamp], or between two poses more than max_gap_s apart (a stretch
+/// the trajectory does not cover). Precondition: `sorted` is sorted by t_s (equal stamps
 /// allowed). Cost: O(log n).
-[[nodiscard]] std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted,
-                                                    double t_s);
+[[nodiscard]] std::optional<Pose2> interpolate_pose(
+    const std::vector<StampedPose2>& sorted, double t_s,
+    double max_gap_s = std::numeric_limits<double>::infinity());
 
 /// Scores `trajectory` (any order: stamps may go backwards, as in real CARMEN logs; a sorted copy
 /// is used) against `relations`. `time_offset_s` is added to every trajectory stamp to bring it
 /// into the relations' time base (Intel: logger-relative stamps + 976052857.337284 s). Relations
-/// with a stamp outside the trajectory's span are skipped and counted. Input error when the
+/// with a stamp outside the trajectory's span, or in a gap of more than max_gap_s between two of
+/// its poses, are skipped and counted: a log has several scans a second, and a longer gap is a
+/// stretch the trajectory does not cover (a resumed session that left part of a log out, a
+/// localizer's lost spell), across which interpolating would score a guess. Input error when the
 /// trajectory or the relations are empty, or when no relation falls inside the span.
 /// Precondition: time_offset_s is finite. Cost: O((n + m) log n) for n poses and m relations.
 [[nodiscard]] Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajectory,
                                                      const std::vector<Relation>& relations,
-                                                     double time_offset_s = 0.0);
+                                                     double time_offset_s = 0.0,
+                                                     double max_gap_s = 5.0);
 
 }  // namespace tessera

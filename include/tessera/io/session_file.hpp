@@ -20,15 +20,27 @@
 namespace tessera {
 
 /// The format version this tessera writes, and the newest it reads.
-inline constexpr std::uint32_t kSessionFormatVersion = 1;
+inline constexpr std::uint32_t kSessionFormatVersion = 2;
+
+/// A trajectory after the first (a resumed session): its first scan's index in Session::scans
+/// and the T_map_robot it was started at (found by relocalization or given).
+struct SessionTrajectoryStart {
+  int first_scan = 0;
+  Pose2 T_map_robot;
+};
 
 struct Session {
+  /// The format version of the file it was read from (written: always kSessionFormatVersion).
+  std::uint32_t format_version = kSessionFormatVersion;
   std::string tessera_version;  // of the tessera that wrote it
   std::string command;          // the command that wrote it ("slam")
   /// The command's effective configuration as --print-config writes it (read back by --config).
   std::string options_yaml;
   /// Every scan the session took in, in input order, as read (stamps, odometry, ranges).
   std::vector<StampedScan> scans;
+  /// Where each trajectory after the first begins, by increasing first_scan (empty: one
+  /// trajectory). Replaying the scans with these starts rebuilds the session exactly.
+  std::vector<SessionTrajectoryStart> trajectory_starts;
   /// T_map_robot at every scan, as optimised at the end.
   std::vector<StampedPose2> trajectory;
   /// Submaps and scan nodes (LaserSlamResult::graph) and, per vertex, its scan index or -1.
@@ -45,7 +57,7 @@ struct Session {
 /// format newer than kSessionFormatVersion, a record that runs past the end (truncated), a CRC-32
 /// that does not match (damaged), a missing record, and contents that do not agree (a trajectory
 /// not one pose per scan, an edge to a missing vertex, a non-finite number, a map whose size is
-/// not its cells).
+/// not its cells, a trajectory start that is not a scan after the first in order).
 [[nodiscard]] Result<Session> decode_session(std::string_view bytes, const std::string& name);
 
 /// Writes encode_session(session) to `path` atomically (io/atomic_file.hpp): a run killed while

@@ -145,6 +145,11 @@ struct LaserSlamOptions {
   double loop_hessian_scale = 0.0;
   /// Huber scale of robust constraints, in units of the whitened residual.
   double huber_scale = 1.0;
+  /// The first node of a new trajectory (start_trajectory) in the nearest node of the earlier
+  /// ones: where relocalization placed it, held loosely so that the loop closures that follow
+  /// decide the fine placement, but firmly enough that the trajectory never floats free of the
+  /// map before they come.
+  ConstraintSigmas start_sigmas{0.1, 0.05};
 
   /// The final map: every node's scan at its optimised pose.
   double map_resolution_m = 0.05;
@@ -195,6 +200,13 @@ struct LaserSlamResult {
   LaserSlamStats stats;
 };
 
+/// Where a trajectory after the first begins (LaserSlam::start_trajectory): the index of its first
+/// scan in the input and that scan's T_map_robot.
+struct TrajectoryStart {
+  int first_scan = 0;
+  Pose2 T_map_robot;
+};
+
 /// The pipeline, fed one scan at a time (any source of StampedScan: a log file, the simulator).
 class LaserSlam {
  public:
@@ -207,6 +219,16 @@ class LaserSlam {
   /// Processes the next scan. `scans_total` only feeds the progress report (0: unknown).
   /// Runtime error if an optimisation fails.
   [[nodiscard]] Status add_scan(const StampedScan& scan, int scans_total = 0);
+
+  /// Begins a new trajectory in the same graph (a resumed session, issue 16): the next scan is
+  /// placed at T_map_robot in the map as optimised so far, with no odometry tie to the scan
+  /// before it (a new log's odometry has its own origin). The trajectory before it ends as a run
+  /// ends: the graph is optimised as finish() does (so a session replayed from its scans is
+  /// then exactly the saved one), and its active submaps are finished and searched for loops.
+  /// The new trajectory's first node is tied to the nearest earlier node with start_sigmas and
+  /// builds its own submaps; loop closures then join them to the old ones. Before any scan, it
+  /// only sets the first scan's pose. Runtime error if the optimisation fails.
+  [[nodiscard]] Status start_trajectory(const Pose2& T_map_robot);
 
   /// T_map_robot of the last scan added, under the graph as optimised so far (a live view's
   /// estimate; finish() optimises once more). Precondition: a scan was added.
@@ -223,9 +245,11 @@ class LaserSlam {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Runs the pipeline over a whole log, in file order. Usage error for invalid options, input
-/// error for a log without scans.
-[[nodiscard]] Result<LaserSlamResult> run_laser_slam(const LaserLog& log,
-                                                     const LaserSlamOptions& options);
+/// Runs the pipeline over a whole log, in file order, beginning a new trajectory at each of
+/// `starts` (by increasing first_scan). Usage error for invalid options, input error for a log
+/// without scans or a start that is not a scan of the log after the first, in order.
+[[nodiscard]] Result<LaserSlamResult> run_laser_slam(
+    const LaserLog& log, const LaserSlamOptions& options,
+    const std::vector<TrajectoryStart>& starts = {});
 
 }  // namespace tessera::slam

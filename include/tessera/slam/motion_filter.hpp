@@ -38,6 +38,9 @@ class MotionFilter {
     return false;
   }
 
+  /// Forgets the last kept pose: the next one is kept (a new trajectory begins).
+  void reset() { has_last_ = false; }
+
  private:
   MotionFilterOptions options_;
   // A flag and a plain pose rather than std::optional<Pose2>: GCC 12 under ASan reports the

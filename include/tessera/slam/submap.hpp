@@ -77,6 +77,9 @@ class ActiveSubmaps {
   /// the oldest when the newest becomes full: the oldest then holds about twice a full one.
   Insertion insert(const ScanPoints& points, const Pose2& T_local_robot);
 
+  /// Finishes every active submap that is not finished yet and empties the window, so that the
+  /// next insert starts a new submap (a trajectory ends); returns the ids it finished.
+  std::vector<int> finish_all();
   /// The submap the next scan should be matched against (the oldest active one); nullopt before
   /// the first insert.
   [[nodiscard]] std::optional<int> matching_id() const;

@@ -1,0 +1,173 @@
+// tessera slam --resume end to end (issue 16): the first two minutes of the real Intel log mapped
+// and saved, then continued with the next two minutes as a new trajectory, found in the saved map
+// with no initial pose; the result agrees with one uninterrupted run, is saved with both
+// trajectories and can be resumed again. Bad input is one line, exit 2 or 3 (4 for a log that
+// cannot be placed), and writes nothing.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "cli_run.hpp"
+#include "support/data.hpp"
+#include "tessera/eval/relation_metric.hpp"
+#include "tessera/io/tum_trajectory.hpp"
+
+namespace tessera {
+namespace {
+
+using support::read_bytes;
+using support::run_cli;
+using support::TempDir;
+using support::write_bytes;
+using ::testing::HasSubstr;
+
+std::filesystem::path intel_log() {
+  return support::data_path("laser/intel/intel-raw-first5505-sot.clf");
+}
+
+// The first 120 s of Intel mapped and saved, and 0-240 s in one run, shared by the tests.
+const std::filesystem::path& runs() {
+  static const TempDir dir;
+  static const bool ran = [] {
+    const std::string slam = "slam --quiet --log " + intel_log().string();
+    auto r = run_cli(slam + " --to-s 120 --out " + (dir.path() / "first").string() + " --save " +
+                     (dir.path() / "first.tsm").string());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    r = run_cli(slam + " --to-s 240 --out " + (dir.path() / "whole").string());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return true;
+  }();
+  (void)ran;
+  return dir.path();
+}
+
+std::vector<StampedPose2> sorted_trajectory(const std::filesystem::path& file) {
+  Result<std::vector<StampedPose2>> read = read_tum_trajectory(file);
+  EXPECT_TRUE(read.ok()) << file;
+  if (!read) return {};
+  std::vector<StampedPose2> sorted = *read;
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const StampedPose2& a, const StampedPose2& b) { return a.t_s < b.t_s; });
+  return sorted;
+}
+
+// The largest distance between two trajectories at the stamps of `a` that `b` covers.
+double worst_distance_m(const std::vector<StampedPose2>& a, const std::vector<StampedPose2>& b) {
+  double worst = 0.0;
+  for (const StampedPose2& p : a) {
+    if (const std::optional<Pose2> q = interpolate_pose(b, p.t_s, 1.0)) {
+      worst = std::max(worst, (q->translation() - p.pose.translation()).norm());
+    }
+  }
+  return worst;
+}
+
+TEST(CliResume, ContinuesASavedSessionAsANewTrajectoryFoundInItsMap) {
+  TESSERA_REQUIRE_DATA(intel_log());
+  const auto& dir = runs();
+  const TempDir out;
+  const auto r =
+      run_cli("slam --log " + intel_log().string() + " --from-s 120 --to-s 240 " + "--resume " +
+              (dir / "first.tsm").string() + " --out " + (out.path() / "run").string() +
+              " --save " + (out.path() / "second.tsm").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json report =
+      nlohmann::json::parse(read_bytes(out.path() / "run" / "report.json"));
+  const nlohmann::json& resume = report["resume"];
+  EXPECT_EQ(resume["start_from"], "relocalization");
+  EXPECT_LE(resume["relocalized_after_s"].get<double>(), 5.0);
+  EXPECT_EQ(resume["trajectories"], 2);
+
+  // One pose per scan of both logs, and where one uninterrupted run over 0-240 s puts the robot.
+  const std::vector<StampedPose2> resumed =
+      sorted_trajectory(out.path() / "run" / "trajectory.txt");
+  const std::vector<StampedPose2> whole = sorted_trajectory(dir / "whole" / "trajectory.txt");
+  EXPECT_EQ(resumed.size(), whole.size());
+  EXPECT_LT(worst_distance_m(resumed, whole), 0.1);
+
+  const auto info = run_cli("info --json " + (out.path() / "second.tsm").string());
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  EXPECT_THAT(info.output, HasSubstr("\"trajectories\": 2"));
+  EXPECT_THAT(info.output, HasSubstr("\"format_version\": 2"));
+
+  // Resumed again (the two trajectories replayed from their saved starts), from a given pose.
+  const Pose2 last = whole.back().pose;
+  std::ostringstream pose;
+  pose << std::setprecision(17) << last.x << ',' << last.y << ',' << last.theta;
+  const auto again =
+      run_cli("slam --quiet --log " + intel_log().string() + " --from-s 240 --to-s 270 --resume " +
+              (out.path() / "second.tsm").string() + " --initial-pose " + pose.str() + " --out " +
+              (out.path() / "third").string() + " --save " + (out.path() / "third.tsm").string());
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  const nlohmann::json third =
+      nlohmann::json::parse(read_bytes(out.path() / "third" / "report.json"));
+  EXPECT_EQ(third["resume"]["start_from"], "--initial-pose");
+  EXPECT_EQ(third["resume"]["trajectories"], 3);
+  // The replayed trajectories are the saved ones.
+  EXPECT_LT(worst_distance_m(resumed, sorted_trajectory(out.path() / "third" / "trajectory.txt")),
+            0.05);
+}
+
+TEST(CliResume, BadInputIsOneLineAndWritesNothing) {
+  TESSERA_REQUIRE_DATA(intel_log());
+  const auto& dir = runs();
+  const TempDir scratch;
+  const auto out = scratch.path() / "out";
+  const auto saved = scratch.path() / "saved.tsm";
+  const std::string tail = " --out " + out.string() + " --save " + saved.string();
+  // A session of a simulated 360-beam lidar, resumed with the Intel log's 180-beam laser.
+  const auto sim = run_cli("slam --builtin office --duration-s 5 --quiet --out " +
+                           (scratch.path() / "sim").string() + " --save " +
+                           (scratch.path() / "sim.tsm").string());
+  ASSERT_EQ(sim.exit_code, 0) << sim.output;
+  const auto other_laser = run_cli("slam --log " + intel_log().string() + " --to-s 10 --resume " +
+                                   (scratch.path() / "sim.tsm").string() + tail);
+  EXPECT_EQ(other_laser.exit_code, 3) << other_laser.output;
+  EXPECT_THAT(other_laser.output, HasSubstr("is not the session's"));
+
+  std::string damaged = read_bytes(dir / "first.tsm");
+  damaged[damaged.size() / 3] = static_cast<char>(damaged[damaged.size() / 3] ^ 0x04);
+  write_bytes(scratch.path() / "damaged.tsm", damaged);
+  const auto bad_session = run_cli("slam --log " + intel_log().string() + " --resume " +
+                                   (scratch.path() / "damaged.tsm").string() + tail);
+  EXPECT_EQ(bad_session.exit_code, 3);
+  EXPECT_THAT(bad_session.output, HasSubstr("damaged.tsm: checksum mismatch"));
+  EXPECT_EQ(read_bytes(scratch.path() / "damaged.tsm"), damaged);
+
+  const std::string resume =
+      "slam --log " + intel_log().string() + " --resume " + (dir / "first.tsm").string();
+  const auto other_cell = run_cli(resume + " --cell-m 0.1" + tail);
+  EXPECT_EQ(other_cell.exit_code, 2);
+  EXPECT_THAT(other_cell.output, HasSubstr("with its own settings"));
+  const auto bad_pose = run_cli(resume + " --initial-pose 1,north" + tail);
+  EXPECT_EQ(bad_pose.exit_code, 2) << bad_pose.output;
+  const auto no_log = run_cli("slam --resume " + (dir / "first.tsm").string() + tail);
+  EXPECT_EQ(no_log.exit_code, 2);
+  EXPECT_THAT(no_log.output, HasSubstr("--resume needs --log or --bag"));
+  const auto pose_alone =
+      run_cli("slam --log " + intel_log().string() + " --initial-pose 0,0,0" + tail);
+  EXPECT_EQ(pose_alone.exit_code, 2);
+  EXPECT_THAT(pose_alone.output, HasSubstr("it needs --resume"));
+  // A log that never comes into the session's map (the robot standing at the start for 10 s,
+  // then the log 400 s later, far away): no guess, exit 4.
+  const auto small = run_cli("slam --quiet --log " + intel_log().string() + " --to-s 10 --out " +
+                             (scratch.path() / "small").string() + " --save " +
+                             (scratch.path() / "small.tsm").string());
+  ASSERT_EQ(small.exit_code, 0) << small.output;
+  const auto elsewhere =
+      run_cli("slam --log " + intel_log().string() + " --from-s 400 --to-s 420 --resume " +
+              (scratch.path() / "small.tsm").string() + tail);
+  EXPECT_EQ(elsewhere.exit_code, 4) << elsewhere.output;
+  EXPECT_THAT(elsewhere.output, HasSubstr("could be placed in the map of"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(saved));
+}
+
+}  // namespace
+}  // namespace tessera

@@ -51,7 +51,7 @@ nlohmann::json session_json(const std::filesystem::path& file, const Session& s)
 // another folder is the same session).
 std::string session_options_yaml(const CLI::App& command) {
   static const std::set<std::string, std::less<>> kNotTheSessions = {
-      "out",   "save",          "resume",       "initial_pose",  "record",
+      "out",   "save",          "autosave_s",   "resume",        "initial_pose", "record",
       "serve", "serve_address", "serve_linger", "step_delay_ms", "quiet"};
   std::istringstream in(effective_config_yaml(command));
   std::string out, line;
@@ -70,6 +70,12 @@ void SlamCommand::add_session_options() {
   sub_->add_option("--save", save_,
                    "Save the session to this .tsm file (the scans, options, trajectory, pose "
                    "graph and map; docs/session-format.md), written atomically");
+  sub_->add_option("--autosave-s", autosave_s_,
+                   "With --save: also save the session so far every this many seconds of data "
+                   "while the run goes on, so that a crash loses at most that much (0: at the end "
+                   "only)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   sub_->add_option("--resume", resume_,
                    "Continue a saved session (.tsm) with --log or --bag as a new trajectory in "
                    "its pose graph, joined to the old ones by loop closures; the log's start is "
@@ -78,6 +84,40 @@ void SlamCommand::add_session_options() {
   sub_->add_option("--initial-pose", initial_pose_,
                    "--resume: X,Y[,THETA] (m, m, rad) of the log's first scan in the session's map "
                    "(default: found by global relocalization)");
+}
+
+Status SlamCommand::check_session_options() const {
+  if (resume_ && !input_.given()) return usage_error("--resume needs --log or --bag");
+  if (initial_pose_ && !resume_) {
+    return usage_error("--initial-pose places a resumed log: it needs --resume");
+  }
+  if (autosave_s_ > 0.0 && !save_) return usage_error("--autosave-s saves to --save: give it");
+  return Ok{};
+}
+
+AfterScan SlamCommand::autosaver(const LaserLog& log,
+                                 const std::vector<slam::TrajectoryStart>& starts) const {
+  if (!save_ || autosave_s_ <= 0.0) return {};
+  // Data time counts forward steps between consecutive scans of a trajectory (a resumed log's
+  // stamps may start anywhere). A resumed session's own scans are replayed, not new: saving
+  // part of them over the file they came from would lose the rest.
+  const int first_new = resume_ ? starts.back().first_scan : 0;
+  return [this, &log, &starts, first_new, since_save_s = 0.0](const slam::LaserSlam& slam,
+                                                              int done) mutable -> Status {
+    const int i = done - 1;
+    if (i <= first_new) return Ok{};
+    const bool starts_here =
+        std::any_of(starts.begin(), starts.end(),
+                    [i](const slam::TrajectoryStart& t) { return t.first_scan == i; });
+    const std::vector<StampedScan>& scans = log.scans;
+    if (!starts_here) {
+      since_save_s += std::max(
+          0.0, scans[static_cast<std::size_t>(i)].t_s - scans[static_cast<std::size_t>(i - 1)].t_s);
+    }
+    if (since_save_s < autosave_s_) return Ok{};
+    since_save_s = 0.0;
+    return save_session({scans.begin(), scans.begin() + done}, starts, slam.snapshot());
+  };
 }
 
 Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
@@ -151,7 +191,7 @@ Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
   return out;
 }
 
-Status SlamCommand::save_session(const LaserLog& log,
+Status SlamCommand::save_session(const std::vector<StampedScan>& scans,
                                  const std::vector<slam::TrajectoryStart>& starts,
                                  const slam::LaserSlamResult& r) const {
   if (!save_) return Ok{};
@@ -159,9 +199,11 @@ Status SlamCommand::save_session(const LaserLog& log,
   s.tessera_version = tessera_version();
   s.command = "slam";
   s.options_yaml = session_options_yaml(*sub_);
-  s.scans = log.scans;
+  s.scans = scans;
   for (const slam::TrajectoryStart& t : starts) {
-    s.trajectory_starts.push_back({t.first_scan, t.T_map_robot});
+    if (t.first_scan < static_cast<int>(scans.size())) {
+      s.trajectory_starts.push_back({t.first_scan, t.T_map_robot});
+    }
   }
   s.trajectory = r.trajectory;
   s.graph = r.graph;

@@ -76,13 +76,10 @@ int SlamCommand::run() const {
     return report_error(usage_error("give --log or --bag, or --world, not both"));
   }
   if (Status s = input_.check(); !s) return report_error(s.error());
-  if (!input_.given() && (relations_ || resume_)) {
-    return report_error(usage_error(
-        fmt::format("{} needs --log or --bag", relations_ ? "--relations" : "--resume")));
+  if (!input_.given() && relations_) {
+    return report_error(usage_error("--relations scores a log: it needs --log or --bag"));
   }
-  if (initial_pose_ && !resume_) {
-    return report_error(usage_error("--initial-pose places a resumed log: it needs --resume"));
-  }
+  if (Status s = check_session_options(); !s) return report_error(s.error());
   slam::LaserSlamOptions options;
   options.loop_closure = !no_loop_closure_;
 
@@ -144,7 +141,8 @@ int SlamCommand::run() const {
                   p.scans_done, p.scans_total, "scans");
   };
   const auto t0 = std::chrono::steady_clock::now();
-  Result<slam::LaserSlamResult> result = run_laser_slam_served(log, starts, options, *recording);
+  Result<slam::LaserSlamResult> result =
+      run_laser_slam_served(log, starts, options, *recording, autosaver(log, starts));
   progress.finish();
   const double wall_s = seconds_since(t0);
   if (!result) {
@@ -206,7 +204,7 @@ int SlamCommand::run() const {
       !s) {
     return report_error(s.error());
   }
-  if (Status s = save_session(log, starts, r); !s) return report_error(s.error());
+  if (Status s = save_session(log.scans, starts, r); !s) return report_error(s.error());
   if (MessageSink* file = recording->file_sink()) recording->note(record_laser_slam(*file, log, r));
   if (MessageSink* live = recording->live_sink()) {
     recording->note(record_laser_slam_result(*live, r));

@@ -12,6 +12,7 @@
 #include "cli_support.hpp"
 #include "laser_input.hpp"
 #include "recording.hpp"
+#include "slam_live.hpp"
 #include "tessera/eval/trajectory_error.hpp"
 #include "tessera/mission/bob_mission.hpp"
 #include "tessera/mission/exploration_mission.hpp"
@@ -200,9 +201,18 @@ class SlamCommand : public Command {
   double idle_exit_s_ = 0.0;
   // --save FILE.tsm: the session; --resume FILE.tsm: continue one (cmd_session.cpp).
   void add_session_options();
-  [[nodiscard]] Status save_session(const LaserLog& log,
+  /// Usage errors for --resume without a log, --initial-pose without --resume, --autosave-s
+  /// without --save.
+  [[nodiscard]] Status check_session_options() const;
+  /// Writes the session of `scans` (the trajectories that start among them) and `r` to --save.
+  [[nodiscard]] Status save_session(const std::vector<StampedScan>& scans,
                                     const std::vector<slam::TrajectoryStart>& starts,
                                     const slam::LaserSlamResult& r) const;
+  /// --autosave-s: saves the session so far every that many seconds of the log's data (not
+  /// while a resumed session's own scans are replayed); empty without it.
+  [[nodiscard]] AfterScan autosaver(const LaserLog& log,
+                                    const std::vector<slam::TrajectoryStart>& starts) const;
+  double autosave_s_ = 0.0;
   /// The resumed session's scans with `log` after them as a new trajectory, started where the
   /// session's map places the log (--initial-pose, or found by relocalization), and the
   /// session's SLAM settings in `options`. `report` gets what was resumed and how it was placed.

@@ -1,6 +1,7 @@
 #include "slam_live.hpp"
 
 #include <chrono>
+#include <optional>
 
 #include "tessera/record/slam_recording.hpp"
 
@@ -8,11 +9,14 @@ namespace tessera::cli {
 
 Result<slam::LaserSlamResult> run_laser_slam_served(
     const LaserLog& log, const std::vector<slam::TrajectoryStart>& starts,
-    const slam::LaserSlamOptions& options, Recording& recording) {
+    const slam::LaserSlamOptions& options, Recording& recording, const AfterScan& after_scan) {
   MessageSink* live = recording.live_sink();
-  if (!live || log.scans.empty()) return slam::run_laser_slam(log, options, starts);
+  if ((!live && !after_scan) || log.scans.empty()) {
+    return slam::run_laser_slam(log, options, starts);
+  }
   slam::LaserSlam slam(options);
-  SlamLiveRecorder recorder(*live);
+  std::optional<SlamLiveRecorder> recorder;
+  if (live) recorder.emplace(*live);
   const int total = static_cast<int>(log.scans.size());
   auto last_map = std::chrono::steady_clock::now();
   auto next_start = starts.begin();
@@ -23,9 +27,13 @@ Result<slam::LaserSlamResult> run_laser_slam_served(
       ++next_start;
     }
     if (Status s = slam.add_scan(scan, total); !s) return s.error();
+    if (after_scan) {
+      if (Status s = after_scan(slam, i + 1); !s) return s.error();
+    }
+    if (!recorder) continue;
     const bool with_map = std::chrono::steady_clock::now() - last_map > std::chrono::seconds(1);
     if (with_map) last_map = std::chrono::steady_clock::now();
-    if (!recording.failed()) recording.note(recorder.scan(slam, scan, with_map));
+    if (!recording.failed()) recording.note(recorder->scan(slam, scan, with_map));
     recording.step_done();
   }
   return slam.finish();

@@ -652,6 +652,15 @@ struct LaserSlam::Impl {
     if (stats.loop_closures > 0) {
       if (Status s = optimize_graph(true); !s) return s.error();
     }
+    LaserSlamResult out = result();
+    out.graph = std::move(graph);
+    out.vertex_scan = std::move(vertex_scan);
+    return out;
+  }
+
+  /// Trajectory, map and statistics under the graph as it is; the graph itself is left to the
+  /// caller (finish() moves it out, snapshot() copies it).
+  LaserSlamResult result() const {
     LaserSlamResult out;
     out.trajectory.reserve(scans.size());
     out.local_trajectory.reserve(scans.size());
@@ -662,14 +671,12 @@ struct LaserSlam::Impl {
 
     const auto t_map = std::chrono::steady_clock::now();
     out.map = build_map();
-    stats.map_s = seconds_since(t_map);
 
-    stats.scans = static_cast<int>(scans.size());
-    stats.nodes = static_cast<int>(nodes.size());
-    stats.submaps = submaps.size();
-    out.graph = std::move(graph);
-    out.vertex_scan = std::move(vertex_scan);
     out.stats = stats;
+    out.stats.map_s = seconds_since(t_map);
+    out.stats.scans = static_cast<int>(scans.size());
+    out.stats.nodes = static_cast<int>(nodes.size());
+    out.stats.submaps = submaps.size();
     return out;
   }
 };
@@ -694,6 +701,14 @@ Pose2 LaserSlam::latest_pose() const {
 }
 
 OccupancyGrid LaserSlam::current_map() const { return impl_->build_map(); }
+
+LaserSlamResult LaserSlam::snapshot() const {
+  TESSERA_ASSERT(!impl_->scans.empty());
+  LaserSlamResult out = impl_->result();
+  out.graph = impl_->graph;
+  out.vertex_scan = impl_->vertex_scan;
+  return out;
+}
 
 Result<LaserSlamResult> LaserSlam::finish() {
   if (impl_->scans.empty()) return input_error("laser SLAM: no scans");

@@ -3,20 +3,30 @@
 // with no initial pose; the result agrees with one uninterrupted run, is saved with both
 // trajectories and can be resumed again. Bad input is one line, exit 2 or 3 (4 for a log that
 // cannot be placed), and writes nothing.
+#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "cli_run.hpp"
 #include "support/data.hpp"
 #include "tessera/eval/relation_metric.hpp"
 #include "tessera/io/tum_trajectory.hpp"
+
+extern char** environ;
 
 namespace tessera {
 namespace {
@@ -114,6 +124,60 @@ TEST(CliResume, ContinuesASavedSessionAsANewTrajectoryFoundInItsMap) {
             0.05);
 }
 
+// --autosave-s: a run killed part way leaves the session as it was at the last autosave, complete
+// and resumable.
+TEST(CliResume, AKilledRunLeavesItsLastAutosavedSession) {
+  TESSERA_REQUIRE_DATA(intel_log());
+  const TempDir dir;
+  const auto saved = dir.path() / "run.tsm";
+  std::string program = TESSERA_CLI;
+  std::vector<std::string> args = {program,
+                                   "slam",
+                                   "--quiet",
+                                   "--log",
+                                   intel_log().string(),
+                                   "--to-s",
+                                   "600",
+                                   "--autosave-s",
+                                   "20",
+                                   "--save",
+                                   saved.string(),
+                                   "--out",
+                                   (dir.path() / "out").string()};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  // Killed as soon as the first autosave is there: 600 s of data take seconds more to map.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (!std::filesystem::exists(saved) && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
+
+  const auto info = run_cli("info --json " + saved.string());
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  const nlohmann::json j = nlohmann::json::parse(info.output);
+  EXPECT_GE(j["duration_s"].get<double>(), 19.0);
+  EXPECT_LT(j["duration_s"].get<double>(), 400.0);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out"));
+  // Resumed with the same log from where the robot was at that moment.
+  const double at_s = j["duration_s"].get<double>();
+  const auto resumed =
+      run_cli("slam --quiet --log " + intel_log().string() + " --from-s " + std::to_string(at_s) +
+              " --to-s " + std::to_string(at_s + 30.0) + " --resume " + saved.string() + " --out " +
+              (dir.path() / "resumed").string());
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
+}
+
 TEST(CliResume, BadInputIsOneLineAndWritesNothing) {
   TESSERA_REQUIRE_DATA(intel_log());
   const auto& dir = runs();
@@ -154,6 +218,10 @@ TEST(CliResume, BadInputIsOneLineAndWritesNothing) {
       run_cli("slam --log " + intel_log().string() + " --initial-pose 0,0,0" + tail);
   EXPECT_EQ(pose_alone.exit_code, 2);
   EXPECT_THAT(pose_alone.output, HasSubstr("it needs --resume"));
+  const auto autosave_alone =
+      run_cli("slam --log " + intel_log().string() + " --autosave-s 10 --out " + out.string());
+  EXPECT_EQ(autosave_alone.exit_code, 2);
+  EXPECT_THAT(autosave_alone.output, HasSubstr("--autosave-s saves to --save"));
   // A log that never comes into the session's map (the robot standing at the start for 10 s,
   // then the log 400 s later, far away): no guess, exit 4.
   const auto small = run_cli("slam --quiet --log " + intel_log().string() + " --to-s 10 --out " +

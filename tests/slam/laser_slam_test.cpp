@@ -206,6 +206,32 @@ TEST(LaserSlam, ANewTrajectoryWithItsOwnOdometryOriginJoinsTheMap) {
   EXPECT_GT(joined->stats.submaps, 0);
 }
 
+// A snapshot (an autosave) is the run so far and leaves the run as it was: finishing afterwards
+// gives what a run without the snapshot gives.
+TEST(LaserSlam, ASnapshotIsTheRunSoFarAndChangesNothing) {
+  LaserLog log = office_run().log;
+  log.scans.resize(80);
+  LaserSlam slam(small_submaps());
+  for (std::size_t i = 0; i < log.scans.size(); ++i) {
+    ASSERT_TRUE(slam.add_scan(log.scans[i]).ok());
+    if (i == 39) {
+      const LaserSlamResult so_far = slam.snapshot();
+      EXPECT_EQ(so_far.trajectory.size(), 40u);
+      EXPECT_EQ(so_far.stats.scans, 40);
+      EXPECT_EQ(so_far.vertex_scan.size(), so_far.graph.poses.size());
+      EXPECT_GT(so_far.map.known_count(), 100u);
+      EXPECT_EQ(so_far.trajectory.back().pose.x, slam.latest_pose().x);
+    }
+  }
+  const Result<LaserSlamResult> with = slam.finish();
+  const Result<LaserSlamResult> without = run_laser_slam(log, small_submaps());
+  ASSERT_TRUE(with.ok() && without.ok());
+  ASSERT_EQ(with->trajectory.size(), without->trajectory.size());
+  for (std::size_t i = 0; i < with->trajectory.size(); ++i) {
+    EXPECT_EQ(with->trajectory[i].pose.x, without->trajectory[i].pose.x);
+  }
+}
+
 TEST(LaserSlam, TrajectoryStartsMustBeScansAfterTheFirstInOrder) {
   LaserLog log = office_run().log;
   log.scans.resize(20);

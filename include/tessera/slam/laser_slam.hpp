@@ -237,6 +237,11 @@ class LaserSlam {
   /// (LaserSlamStats::map_s): for a live view now and then, not per scan.
   [[nodiscard]] OccupancyGrid current_map() const;
 
+  /// The result so far, as the graph is now (no final optimisation): for saving a session while
+  /// the run goes on. Costs what finish()'s trajectory and map cost. Precondition: a scan was
+  /// added.
+  [[nodiscard]] LaserSlamResult snapshot() const;
+
   /// Final optimisation, trajectory and map. Call once, after the last scan.
   [[nodiscard]] Result<LaserSlamResult> finish();
 

@@ -1,19 +1,12 @@
-// Saved sessions (issue 16, io/session_file.hpp): `tessera slam --save FILE.tsm` and `--resume
-// FILE.tsm`, `tessera info FILE.tsm` and `tessera session export FILE.tsm --out DIR`.
+// Saved sessions (issue 16, io/session_file.hpp): `tessera info FILE.tsm` and `tessera session
+// export FILE.tsm --out DIR`. The slam command's --save and --resume are slam_session.cpp.
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include <chrono>
-#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <set>
-#include <sstream>
-#include <string_view>
 
 #include "commands.hpp"
-#include "config_file.hpp"
-#include "session_map.hpp"
 #include "slam_report.hpp"
 #include "tessera/io/session_file.hpp"
 #include "tessera/report/core_report.hpp"
@@ -46,171 +39,7 @@ nlohmann::json session_json(const std::filesystem::path& file, const Session& s)
           {"file_bytes", ec ? 0 : bytes}};
 }
 
-// The run's settings as a session keeps them: --print-config's YAML without the settings of
-// where the run wrote and showed its outputs, which are not the session's (a session saved from
-// another folder is the same session).
-std::string session_options_yaml(const CLI::App& command) {
-  static const std::set<std::string, std::less<>> kNotTheSessions = {
-      "out",   "save",          "autosave_s",   "resume",        "initial_pose", "record",
-      "serve", "serve_address", "serve_linger", "step_delay_ms", "quiet"};
-  std::istringstream in(effective_config_yaml(command));
-  std::string out, line;
-  while (std::getline(in, line)) {
-    std::string_view key = line;
-    if (key.starts_with("# ")) key.remove_prefix(2);
-    key = key.substr(0, key.find(':'));
-    if (!kNotTheSessions.contains(key)) out += line + "\n";
-  }
-  return out;
-}
-
 }  // namespace
-
-void SlamCommand::add_session_options() {
-  sub_->add_option("--save", save_,
-                   "Save the session to this .tsm file (the scans, options, trajectory, pose "
-                   "graph and map; docs/session-format.md), written atomically");
-  sub_->add_option("--autosave-s", autosave_s_,
-                   "With --save: also save the session so far every this many seconds of data "
-                   "while the run goes on, so that a crash loses at most that much (0: at the end "
-                   "only)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  sub_->add_option("--resume", resume_,
-                   "Continue a saved session (.tsm) with --log or --bag as a new trajectory in "
-                   "its pose graph, joined to the old ones by loop closures; the log's start is "
-                   "found in the session's map (or given by --initial-pose). Save the result "
-                   "with --save");
-  sub_->add_option("--initial-pose", initial_pose_,
-                   "--resume: X,Y[,THETA] (m, m, rad) of the log's first scan in the session's map "
-                   "(default: found by global relocalization)");
-}
-
-Status SlamCommand::check_session_options() const {
-  if (resume_ && !input_.given()) return usage_error("--resume needs --log or --bag");
-  if (initial_pose_ && !resume_) {
-    return usage_error("--initial-pose places a resumed log: it needs --resume");
-  }
-  if (autosave_s_ > 0.0 && !save_) return usage_error("--autosave-s saves to --save: give it");
-  return Ok{};
-}
-
-AfterScan SlamCommand::autosaver(const LaserLog& log,
-                                 const std::vector<slam::TrajectoryStart>& starts) const {
-  if (!save_ || autosave_s_ <= 0.0) return {};
-  // Data time counts forward steps between consecutive scans of a trajectory (a resumed log's
-  // stamps may start anywhere). A resumed session's own scans are replayed, not new: saving
-  // part of them over the file they came from would lose the rest.
-  const int first_new = resume_ ? starts.back().first_scan : 0;
-  return [this, &log, &starts, first_new, since_save_s = 0.0](const slam::LaserSlam& slam,
-                                                              int done) mutable -> Status {
-    const int i = done - 1;
-    if (i <= first_new) return Ok{};
-    const bool starts_here =
-        std::any_of(starts.begin(), starts.end(),
-                    [i](const slam::TrajectoryStart& t) { return t.first_scan == i; });
-    const std::vector<StampedScan>& scans = log.scans;
-    if (!starts_here) {
-      since_save_s += std::max(
-          0.0, scans[static_cast<std::size_t>(i)].t_s - scans[static_cast<std::size_t>(i - 1)].t_s);
-    }
-    if (since_save_s < autosave_s_) return Ok{};
-    since_save_s = 0.0;
-    return save_session({scans.begin(), scans.begin() + done}, starts, slam.snapshot());
-  };
-}
-
-Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
-                                                         slam::LaserSlamOptions& options,
-                                                         nlohmann::json& report) const {
-  const std::string name = resume_->string();
-  Result<Session> session = read_session(*resume_);
-  if (!session) return session.error();
-  if (session->scans.empty()) return input_error(name + ": the session holds no scans");
-  if (Status s = check_same_laser(*session, log, name, input_.name()); !s) return s.error();
-  // The session's SLAM settings: its scans rebuild its state only under them.
-  bool session_loop_closure = true;
-  try {
-    const YAML::Node settings = YAML::Load(session->options_yaml);
-    if (settings["no_loop_closure"]) {
-      session_loop_closure = !settings["no_loop_closure"].as<bool>();
-    }
-  } catch (const YAML::Exception& e) {
-    return input_error(name + ": its settings (OPTS record) are not readable YAML: " + e.what());
-  }
-  const double session_cell_m = session->map.geometry().resolution_m();
-  if ((cell_m_ && std::abs(*cell_m_ - session_cell_m) > 1e-12) ||
-      (no_loop_closure_ && session_loop_closure)) {
-    return usage_error(fmt::format(
-        "--resume continues {} with its own settings (cell {} m, loop closure {}); leave "
-        "--cell-m and --no-loop-closure out",
-        name, session_cell_m, session_loop_closure ? "on" : "off"));
-  }
-  options.map_resolution_m = session_cell_m;
-  options.loop_closure = session_loop_closure;
-
-  // Where the log starts in the session's map.
-  Pose2 T_map_first;
-  std::optional<double> found_after_s;
-  if (initial_pose_) {
-    Result<Pose2> p = parse_pose(*initial_pose_, "--initial-pose");
-    if (!p) return p.error();
-    T_map_first = *p;
-  } else {
-    const slam::LocalizerOptions localizer_options;
-    Result<slam::ProbabilityGrid> map = session_frozen_map(*session, localizer_options, name);
-    if (!map) return map.error();
-    slam::Localizer localizer(std::move(map).value(), localizer_options);
-    const std::optional<FoundStart> found = find_log_start(localizer, log);
-    if (!found) {
-      return runtime_error(fmt::format(
-          "{}: no scan of it could be placed in the map of {} (global relocalization found no "
-          "place clearly better than all others); give --initial-pose X,Y,THETA",
-          input_.name(), name));
-    }
-    T_map_first = found->T_map_robot;
-    found_after_s = found->found_after_s;
-  }
-
-  Resumed out;
-  for (const SessionTrajectoryStart& t : session->trajectory_starts) {
-    out.starts.push_back({t.first_scan, t.T_map_robot});
-  }
-  out.starts.push_back({static_cast<int>(session->scans.size()), T_map_first});
-  report = {
-      {"session", name},
-      {"session_scans", session->scans.size()},
-      {"trajectories", out.starts.size() + 1},
-      {"start", {{"x_m", T_map_first.x}, {"y_m", T_map_first.y}, {"theta_rad", T_map_first.theta}}},
-      {"start_from", initial_pose_ ? "--initial-pose" : "relocalization"},
-      {"relocalized_after_s", found_after_s ? nlohmann::json(*found_after_s) : nullptr}};
-  out.log.scans = std::move(session->scans);
-  out.log.backward_stamps = log.backward_stamps;
-  out.log.scans.insert(out.log.scans.end(), std::make_move_iterator(log.scans.begin()),
-                       std::make_move_iterator(log.scans.end()));
-  return out;
-}
-
-Status SlamCommand::save_session(const std::vector<StampedScan>& scans,
-                                 const std::vector<slam::TrajectoryStart>& starts,
-                                 const slam::LaserSlamResult& r) const {
-  if (!save_) return Ok{};
-  Session s;
-  s.tessera_version = tessera_version();
-  s.command = "slam";
-  s.options_yaml = session_options_yaml(*sub_);
-  s.scans = scans;
-  for (const slam::TrajectoryStart& t : starts) {
-    if (t.first_scan < static_cast<int>(scans.size())) {
-      s.trajectory_starts.push_back({t.first_scan, t.T_map_robot});
-    }
-  }
-  s.trajectory = r.trajectory;
-  s.graph = r.graph;
-  s.vertex_scan = r.vertex_scan;
-  s.map = r.map;
-  return write_session(*save_, s);
-}
 
 int InfoCommand::run_session() const {
   Result<Session> read = read_session(file_);

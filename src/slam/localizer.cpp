@@ -61,6 +61,9 @@ std::optional<std::string> validate(const LocalizerOptions& o) {
     return "ambiguity_ratio must be in (0, 1]";
   }
   if (o.confirmations < 1) return "confirmations must be >= 1";
+  if (!(o.max_free_conflict >= 0.0 && o.max_free_conflict <= 1.0)) {
+    return "max_free_conflict must be in [0, 1]";
+  }
   if (!(o.agreement.linear_m > 0.0) || !(o.agreement.angular_rad > 0.0)) {
     return "agreement must be > 0";
   }
@@ -198,6 +201,34 @@ struct Localizer::Impl {
     }
   }
 
+  /// The share of the view's free space that the map, with the view at T_map_view, calls wall:
+  /// of the view's free cells well inside its free space (all eight neighbours free too, so a
+  /// cell's offset along a wall does not count) that fall on cells the map knows, those where
+  /// the map is occupied. Seeing through where the map has a wall contradicts a pose even
+  /// where every return lands on a wall; a mirrored place in the building does exactly that.
+  [[nodiscard]] double free_space_conflict(const Pose2& T_map_view) const {
+    const GridGeometry& v = view_grid.geometry();
+    const GridGeometry& g = map.geometry();
+    const auto free = [&](Cell c) {
+      return v.contains(c) && view_grid.known(c) && view_grid.probability(c) < 0.5f;
+    };
+    int on_map = 0, conflicts = 0;
+    for (int y = 1; y + 1 < v.height(); ++y) {
+      for (int x = 1; x + 1 < v.width(); ++x) {
+        bool interior = true;
+        for (int dy = -1; dy <= 1 && interior; ++dy) {
+          for (int dx = -1; dx <= 1 && interior; ++dx) interior = free({x + dx, y + dy});
+        }
+        if (!interior) continue;
+        const Cell c = g.cell_at_unchecked(T_map_view * v.center_of({x, y}));
+        if (!g.contains(c) || !map.known(c)) continue;
+        ++on_map;
+        if (map.probability(c) >= 0.6f) ++conflicts;
+      }
+    }
+    return on_map == 0 ? 0.0 : static_cast<double>(conflicts) / static_cast<double>(on_map);
+  }
+
   /// The view's points in the frame of its newest scan.
   [[nodiscard]] std::vector<Vec2> view_points() const {
     std::vector<Vec2> all;
@@ -231,7 +262,9 @@ struct Localizer::Impl {
           (refined.T_grid_robot.translation() - best->T_grid_robot.translation()).norm();
       const MapFit f = fit_of(refined.T_grid_robot, refine_points);
       if (f.map_share >= options.min_map_share && f.fit >= options.min_relocalize_score &&
-          shift_m <= 2.0 * res) {
+          shift_m <= 2.0 * res &&
+          free_space_conflict(refined.T_grid_robot * view.back().T_view_robot.inverse()) <=
+              options.max_free_conflict) {
         // The runner-up: the best pose of any other place, which must score clearly less, both
         // counted above what a view that sees nothing of the map scores (unknown_score: "the
         // robot is somewhere the map does not show" is always an answer).

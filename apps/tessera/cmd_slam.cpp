@@ -141,8 +141,8 @@ int SlamCommand::run() const {
                   p.scans_done, p.scans_total, "scans");
   };
   const auto t0 = std::chrono::steady_clock::now();
-  Result<slam::LaserSlamResult> result =
-      run_laser_slam_served(log, starts, options, *recording, autosaver(log, starts));
+  Result<slam::LaserSlamResult> result = run_laser_slam_served(
+      log, starts, options, *recording, autosaver(log, starts, options.loop_closure));
   progress.finish();
   const double wall_s = seconds_since(t0);
   if (!result) {
@@ -204,7 +204,8 @@ int SlamCommand::run() const {
       !s) {
     return report_error(s.error());
   }
-  if (Status s = save_session(log.scans, starts, r); !s) return report_error(s.error());
+  if (Status s = save_session(log.scans, starts, options.loop_closure, r); !s)
+    return report_error(s.error());
   if (MessageSink* file = recording->file_sink()) recording->note(record_laser_slam(*file, log, r));
   if (MessageSink* live = recording->live_sink()) {
     recording->note(record_laser_slam_result(*live, r));

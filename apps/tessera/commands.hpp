@@ -204,14 +204,16 @@ class SlamCommand : public Command {
   /// Usage errors for --resume without a log, --initial-pose without --resume, --autosave-s
   /// without --save.
   [[nodiscard]] Status check_session_options() const;
-  /// Writes the session of `scans` (the trajectories that start among them) and `r` to --save.
+  /// Writes the session of `scans` (the trajectories that start among them) and `r` to --save;
+  /// `loop_closure` is the run's (a resumed run takes the session's, whatever its flags).
   [[nodiscard]] Status save_session(const std::vector<StampedScan>& scans,
                                     const std::vector<slam::TrajectoryStart>& starts,
-                                    const slam::LaserSlamResult& r) const;
+                                    bool loop_closure, const slam::LaserSlamResult& r) const;
   /// --autosave-s: saves the session so far every that many seconds of the log's data (not
   /// while a resumed session's own scans are replayed); empty without it.
   [[nodiscard]] AfterScan autosaver(const LaserLog& log,
-                                    const std::vector<slam::TrajectoryStart>& starts) const;
+                                    const std::vector<slam::TrajectoryStart>& starts,
+                                    bool loop_closure) const;
   double autosave_s_ = 0.0;
   /// The resumed session's scans with `log` after them as a new trajectory, started where the
   /// session's map places the log (--initial-pose, or found by relocalization), and the

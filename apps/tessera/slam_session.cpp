@@ -22,8 +22,9 @@ namespace {
 
 // The run's settings as a session keeps them: --print-config's YAML without the settings of
 // where the run wrote and showed its outputs, which are not the session's (a session saved from
-// another folder is the same session).
-std::string session_options_yaml(const CLI::App& command) {
+// another folder is the same session). Loop closure is the run's: a resumed run keeps the
+// session's, whether or not its own command line repeats --no-loop-closure.
+std::string session_options_yaml(const CLI::App& command, bool loop_closure) {
   static const std::set<std::string, std::less<>> kNotTheSessions = {
       "out",   "save",          "autosave_s",   "resume",        "initial_pose", "record",
       "serve", "serve_address", "serve_linger", "step_delay_ms", "quiet"};
@@ -33,8 +34,9 @@ std::string session_options_yaml(const CLI::App& command) {
     std::string_view key = line;
     if (key.starts_with("# ")) key.remove_prefix(2);
     key = key.substr(0, key.find(':'));
-    if (!kNotTheSessions.contains(key)) out += line + "\n";
+    if (!kNotTheSessions.contains(key) && key != "no_loop_closure") out += line + "\n";
   }
+  out += loop_closure ? "# no_loop_closure: ~  (unset)\n" : "no_loop_closure: true\n";
   return out;
 }
 
@@ -70,14 +72,15 @@ Status SlamCommand::check_session_options() const {
 }
 
 AfterScan SlamCommand::autosaver(const LaserLog& log,
-                                 const std::vector<slam::TrajectoryStart>& starts) const {
+                                 const std::vector<slam::TrajectoryStart>& starts,
+                                 bool loop_closure) const {
   if (!save_ || autosave_s_ <= 0.0) return {};
   // Data time counts forward steps between consecutive scans of a trajectory (a resumed log's
   // stamps may start anywhere). A resumed session's own scans are replayed, not new: saving
   // part of them over the file they came from would lose the rest.
   const int first_new = resume_ ? starts.back().first_scan : 0;
-  return [this, &log, &starts, first_new, since_save_s = 0.0](const slam::LaserSlam& slam,
-                                                              int done) mutable -> Status {
+  return [this, &log, &starts, first_new, loop_closure, since_save_s = 0.0](
+             const slam::LaserSlam& slam, int done) mutable -> Status {
     const int i = done - 1;
     if (i <= first_new) return Ok{};
     const bool starts_here =
@@ -90,7 +93,8 @@ AfterScan SlamCommand::autosaver(const LaserLog& log,
     }
     if (since_save_s < autosave_s_) return Ok{};
     since_save_s = 0.0;
-    return save_session({scans.begin(), scans.begin() + done}, starts, slam.snapshot());
+    return save_session({scans.begin(), scans.begin() + done}, starts, loop_closure,
+                        slam.snapshot());
   };
 }
 
@@ -167,12 +171,12 @@ Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
 
 Status SlamCommand::save_session(const std::vector<StampedScan>& scans,
                                  const std::vector<slam::TrajectoryStart>& starts,
-                                 const slam::LaserSlamResult& r) const {
+                                 bool loop_closure, const slam::LaserSlamResult& r) const {
   if (!save_) return Ok{};
   Session s;
   s.tessera_version = tessera_version();
   s.command = "slam";
-  s.options_yaml = session_options_yaml(*sub_);
+  s.options_yaml = session_options_yaml(*sub_, loop_closure);
   s.scans = scans;
   for (const slam::TrajectoryStart& t : starts) {
     if (t.first_scan < static_cast<int>(scans.size())) {

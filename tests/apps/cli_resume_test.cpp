@@ -1,8 +1,8 @@
-// tessera slam --resume end to end (issue 16): the first two minutes of the real Intel log mapped
-// and saved, then continued with the next two minutes as a new trajectory, found in the saved map
-// with no initial pose; the result agrees with one uninterrupted run, is saved with both
-// trajectories and can be resumed again. Bad input is one line, exit 2 or 3 (4 for a log that
-// cannot be placed), and writes nothing.
+// tessera slam --resume end to end (issue 16): the first 90 s of the real Intel log mapped and
+// saved, then continued with 90-180 s as a new trajectory, found in the saved map with no initial
+// pose; the result agrees with one uninterrupted run, is saved with both trajectories and can be
+// resumed again, under the session's settings. Autosave survives a kill. Bad input is one line,
+// exit 2 or 3 (4 for a log that cannot be placed), and writes nothing.
 #include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -41,15 +41,15 @@ std::filesystem::path intel_log() {
   return support::data_path("laser/intel/intel-raw-first5505-sot.clf");
 }
 
-// The first 120 s of Intel mapped and saved, and 0-240 s in one run, shared by the tests.
+// The first 90 s of Intel mapped and saved, and 0-180 s in one run, shared by the tests.
 const std::filesystem::path& runs() {
   static const TempDir dir;
   static const bool ran = [] {
     const std::string slam = "slam --quiet --log " + intel_log().string();
-    auto r = run_cli(slam + " --to-s 120 --out " + (dir.path() / "first").string() + " --save " +
+    auto r = run_cli(slam + " --to-s 90 --out " + (dir.path() / "first").string() + " --save " +
                      (dir.path() / "first.tsm").string());
     EXPECT_EQ(r.exit_code, 0) << r.output;
-    r = run_cli(slam + " --to-s 240 --out " + (dir.path() / "whole").string());
+    r = run_cli(slam + " --to-s 180 --out " + (dir.path() / "whole").string());
     EXPECT_EQ(r.exit_code, 0) << r.output;
     return true;
   }();
@@ -83,7 +83,7 @@ TEST(CliResume, ContinuesASavedSessionAsANewTrajectoryFoundInItsMap) {
   const auto& dir = runs();
   const TempDir out;
   const auto r =
-      run_cli("slam --log " + intel_log().string() + " --from-s 120 --to-s 240 " + "--resume " +
+      run_cli("slam --log " + intel_log().string() + " --from-s 90 --to-s 180 " + "--resume " +
               (dir / "first.tsm").string() + " --out " + (out.path() / "run").string() +
               " --save " + (out.path() / "second.tsm").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -94,7 +94,7 @@ TEST(CliResume, ContinuesASavedSessionAsANewTrajectoryFoundInItsMap) {
   EXPECT_LE(resume["relocalized_after_s"].get<double>(), 5.0);
   EXPECT_EQ(resume["trajectories"], 2);
 
-  // One pose per scan of both logs, and where one uninterrupted run over 0-240 s puts the robot.
+  // One pose per scan of both logs, and where one uninterrupted run over 0-180 s puts the robot.
   const std::vector<StampedPose2> resumed =
       sorted_trajectory(out.path() / "run" / "trajectory.txt");
   const std::vector<StampedPose2> whole = sorted_trajectory(dir / "whole" / "trajectory.txt");
@@ -111,7 +111,7 @@ TEST(CliResume, ContinuesASavedSessionAsANewTrajectoryFoundInItsMap) {
   std::ostringstream pose;
   pose << std::setprecision(17) << last.x << ',' << last.y << ',' << last.theta;
   const auto again =
-      run_cli("slam --quiet --log " + intel_log().string() + " --from-s 240 --to-s 270 --resume " +
+      run_cli("slam --quiet --log " + intel_log().string() + " --from-s 180 --to-s 200 --resume " +
               (out.path() / "second.tsm").string() + " --initial-pose " + pose.str() + " --out " +
               (out.path() / "third").string() + " --save " + (out.path() / "third.tsm").string());
   ASSERT_EQ(again.exit_code, 0) << again.output;
@@ -122,6 +122,31 @@ TEST(CliResume, ContinuesASavedSessionAsANewTrajectoryFoundInItsMap) {
   // The replayed trajectories are the saved ones.
   EXPECT_LT(worst_distance_m(resumed, sorted_trajectory(out.path() / "third" / "trajectory.txt")),
             0.05);
+}
+
+// A session mapped without loop closure stays so through every resume, though the resumed runs'
+// command lines do not repeat --no-loop-closure: a replay must run under the session's settings.
+TEST(CliResume, TheSessionsSettingsCarryOverEveryResume) {
+  TESSERA_REQUIRE_DATA(intel_log());
+  const TempDir dir;
+  const std::string slam = "slam --quiet --log " + intel_log().string();
+  const auto path = [&](const char* name) { return (dir.path() / name).string(); };
+  ASSERT_EQ(
+      run_cli(slam + " --to-s 60 --no-loop-closure --out " + path("a") + " --save " + path("a.tsm"))
+          .exit_code,
+      0);
+  ASSERT_EQ(run_cli(slam + " --from-s 60 --to-s 90 --resume " + path("a.tsm") + " --out " +
+                    path("b") + " --save " + path("b.tsm"))
+                .exit_code,
+            0);
+  ASSERT_EQ(
+      run_cli(slam + " --from-s 90 --to-s 100 --resume " + path("b.tsm") + " --out " + path("c"))
+          .exit_code,
+      0);
+  const nlohmann::json report = nlohmann::json::parse(read_bytes(dir.path() / "c" / "report.json"));
+  EXPECT_EQ(report["options"]["loop_closure"], false);
+  EXPECT_EQ(report["slam"]["loop_closures"], 0);
+  EXPECT_EQ(report["resume"]["trajectories"], 3);
 }
 
 // --autosave-s: a run killed part way leaves the session as it was at the last autosave, complete

@@ -54,8 +54,8 @@ std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted, d
 }
 
 Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajectory,
-                                       const std::vector<Relation>& relations, double time_offset_s,
-                                       double max_gap_s) {
+                                       const std::vector<Relation>& relations,
+                                       double time_offset_s) {
   TESSERA_ASSERT(std::isfinite(time_offset_s));
   if (trajectory.empty()) return input_error("the trajectory has no poses");
   if (relations.empty()) return input_error("there are no relations to score");
@@ -64,6 +64,18 @@ Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajecto
   for (StampedPose2& p : sorted) p.t_s += time_offset_s;
   std::stable_sort(sorted.begin(), sorted.end(),
                    [](const StampedPose2& a, const StampedPose2& b) { return a.t_s < b.t_s; });
+
+  // The longest gap interpolated across: 5 s, or 20 median steps for a sparse trajectory.
+  std::vector<double> steps_s;
+  for (std::size_t i = 1; i < sorted.size(); ++i) {
+    if (sorted[i].t_s > sorted[i - 1].t_s) steps_s.push_back(sorted[i].t_s - sorted[i - 1].t_s);
+  }
+  double max_gap_s = 5.0;
+  if (!steps_s.empty()) {
+    const auto middle = steps_s.begin() + static_cast<std::ptrdiff_t>(steps_s.size() / 2);
+    std::nth_element(steps_s.begin(), middle, steps_s.end());
+    max_gap_s = std::max(max_gap_s, 20.0 * *middle);
+  }
 
   RelationMetric m;
   m.poses = sorted.size();

@@ -70,6 +70,14 @@ TEST(RelationMetric, SkipsRelationsInAStretchTheTrajectoryDoesNotCover) {
   EXPECT_EQ(m->count, 2u);
   EXPECT_EQ(m->skipped, 1u);
   EXPECT_NEAR(m->trans_mean_m, 0.0, 1e-9);
+
+  // Keyframes 3 s apart (a corrected log): a 10 s gap among them is an ordinary one.
+  std::vector<StampedPose2> keyframes;
+  for (int i = 0; i <= 20; ++i)
+    keyframes.push_back({3.0 * i + (i > 10 ? 7.0 : 0.0), {1.0 * i, 0.0, 0.0}});
+  const Result<RelationMetric> sparse = relation_metric(keyframes, {{31.0, 36.0, {0.5, 0.0, 0.0}}});
+  ASSERT_TRUE(sparse.ok()) << sparse.error().message;
+  EXPECT_EQ(sparse->count, 1u);
 }
 
 TEST(RelationMetric, ExactTrajectoryScoresZero) {

@@ -57,15 +57,16 @@ struct RelationMetric {
 /// Scores `trajectory` (any order: stamps may go backwards, as in real CARMEN logs; a sorted copy
 /// is used) against `relations`. `time_offset_s` is added to every trajectory stamp to bring it
 /// into the relations' time base (Intel: logger-relative stamps + 976052857.337284 s). Relations
-/// with a stamp outside the trajectory's span, or in a gap of more than max_gap_s between two of
-/// its poses, are skipped and counted: a log has several scans a second, and a longer gap is a
-/// stretch the trajectory does not cover (a resumed session that left part of a log out, a
-/// localizer's lost spell), across which interpolating would score a guess. Input error when the
+/// with a stamp outside the trajectory's span, or in a gap between two of its poses longer than
+/// both 5 s and 20 times its median step, are skipped and counted: such a gap is a stretch the
+/// trajectory does not cover (a resumed session that left part of a log out, a localizer's lost
+/// spell), across which interpolating would score a guess. A trajectory of one pose per scan
+/// (0.2 s apart) skips gaps over 5 s; one of keyframes seconds apart keeps its ordinary gaps.
+/// Input error when the
 /// trajectory or the relations are empty, or when no relation falls inside the span.
 /// Precondition: time_offset_s is finite. Cost: O((n + m) log n) for n poses and m relations.
 [[nodiscard]] Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajectory,
                                                      const std::vector<Relation>& relations,
-                                                     double time_offset_s = 0.0,
-                                                     double max_gap_s = 5.0);
+                                                     double time_offset_s = 0.0);
 
 }  // namespace tessera

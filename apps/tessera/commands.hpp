@@ -211,9 +211,9 @@ class SlamCommand : public Command {
                                     bool loop_closure, const slam::LaserSlamResult& r) const;
   /// --autosave-s: saves the session so far every that many seconds of the log's data (not
   /// while a resumed session's own scans are replayed); empty without it.
-  [[nodiscard]] AfterScan autosaver(const LaserLog& log,
-                                    const std::vector<slam::TrajectoryStart>& starts,
-                                    bool loop_closure) const;
+  [[nodiscard]] slam::AfterScan autosaver(const LaserLog& log,
+                                          const std::vector<slam::TrajectoryStart>& starts,
+                                          bool loop_closure) const;
   double autosave_s_ = 0.0;
   /// The resumed session's scans with `log` after them as a new trajectory, started where the
   /// session's map places the log (--initial-pose, or found by relocalization), and the

@@ -71,9 +71,9 @@ Status SlamCommand::check_session_options() const {
   return Ok{};
 }
 
-AfterScan SlamCommand::autosaver(const LaserLog& log,
-                                 const std::vector<slam::TrajectoryStart>& starts,
-                                 bool loop_closure) const {
+slam::AfterScan SlamCommand::autosaver(const LaserLog& log,
+                                       const std::vector<slam::TrajectoryStart>& starts,
+                                       bool loop_closure) const {
   if (!save_ || autosave_s_ <= 0.0) return {};
   // Data time counts forward steps between consecutive scans of a trajectory (a resumed log's
   // stamps may start anywhere). A resumed session's own scans are replayed, not new: saving

@@ -716,7 +716,8 @@ Result<LaserSlamResult> LaserSlam::finish() {
 }
 
 Result<LaserSlamResult> run_laser_slam(const LaserLog& log, const LaserSlamOptions& options,
-                                       const std::vector<TrajectoryStart>& starts) {
+                                       const std::vector<TrajectoryStart>& starts,
+                                       const AfterScan& after_scan) {
   if (auto problem = validate(options)) return usage_error("laser SLAM options: " + *problem);
   if (log.scans.empty()) return input_error("laser SLAM: the log has no scans");
   const int total = static_cast<int>(log.scans.size());
@@ -737,6 +738,9 @@ Result<LaserSlamResult> run_laser_slam(const LaserLog& log, const LaserSlamOptio
     }
     if (Status s = slam.add_scan(log.scans[static_cast<std::size_t>(i)], total); !s) {
       return s.error();
+    }
+    if (after_scan) {
+      if (Status s = after_scan(slam, i + 1); !s) return s.error();
     }
   }
   return slam.finish();

@@ -250,11 +250,16 @@ class LaserSlam {
   std::unique_ptr<Impl> impl_;
 };
 
+/// Called by run_laser_slam after every scan with the pipeline and the number of scans done (a
+/// live view, an autosave); an error stops the run with it.
+using AfterScan = std::function<Status(const LaserSlam& slam, int scans_done)>;
+
 /// Runs the pipeline over a whole log, in file order, beginning a new trajectory at each of
-/// `starts` (by increasing first_scan). Usage error for invalid options, input error for a log
-/// without scans or a start that is not a scan of the log after the first, in order.
+/// `starts` (by increasing first_scan) and calling `after_scan` after every scan. Usage error
+/// for invalid options, input error for a log without scans or a start that is not a scan of
+/// the log after the first, in order.
 [[nodiscard]] Result<LaserSlamResult> run_laser_slam(
     const LaserLog& log, const LaserSlamOptions& options,
-    const std::vector<TrajectoryStart>& starts = {});
+    const std::vector<TrajectoryStart>& starts = {}, const AfterScan& after_scan = {});
 
 }  // namespace tessera::slam

@@ -1,7 +1,8 @@
 // tessera localize: the robot's pose in a saved session's map, scan by scan, with no new map
 // (slam/localizer.hpp): tracking, loss detection, and global relocalization when no initial pose
 // is given or tracking is lost. Thin glue: read the session and the log first, so that bad input
-// writes nothing; localize; write the poses, the picture and report.json.
+// writes nothing; localize; write the poses, the picture and report.json. The live node (--ros)
+// is in cmd_localize_ros.cpp.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -66,10 +67,12 @@ LocalizeCommand::LocalizeCommand(CLI::App& app) {
                    "Seconds added to the log's stamps to reach the relations' time base")
       ->capture_default_str();
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
+  add_ros_options();
 }
 
 int LocalizeCommand::run() const {
-  if (!input_.given()) return report_error(usage_error("localize needs --log or --bag"));
+  if (ros_) return run_ros();
+  if (!input_.given()) return report_error(usage_error("localize needs --log, --bag or --ros"));
   if (Status s = input_.check(); !s) return report_error(s.error());
   if (!std::isfinite(time_offset_s_)) {
     return report_error(usage_error("--time-offset must be a finite number of seconds"));
@@ -109,13 +112,8 @@ int LocalizeCommand::run() const {
   ProgressLine progress(!quiet_ && stderr_is_terminal());
   std::vector<slam::LocalizedScan> scans;
   scans.reserve(log->scans.size());
-  std::optional<double> first_pose_after_s;
-  const double t_first = log->scans.front().t_s;
   for (const StampedScan& scan : log->scans) {
     scans.push_back(localizer.add_scan(scan));
-    if (!first_pose_after_s && scans.back().state != slam::LocalizationState::kLost) {
-      first_pose_after_s = scan.t_s - t_first;
-    }
     if (scans.size() % 50 == 0 || scans.size() == log->scans.size()) {
       progress.show(fmt::format("localize: scan {}/{}  {}", scans.size(), log->scans.size(),
                                 slam::to_string(scans.back().state)),
@@ -124,12 +122,26 @@ int LocalizeCommand::run() const {
     }
   }
   progress.finish();
-  const double wall_s = seconds_since(t0);
-  const double duration_s = data_duration_s(*log);
+  const nlohmann::json options_json = {{"session", session_.string()},
+                                       {"input", input_.name()},
+                                       {"initial_pose", initial_pose_.value_or("")},
+                                       {"time_offset_s", time_offset_s_}};
+  return write_outputs(scans, localizer, options_json, seconds_since(t0), data_duration_s(*log),
+                       relations, nullptr);
+}
 
+int LocalizeCommand::write_outputs(const std::vector<slam::LocalizedScan>& scans,
+                                   const slam::Localizer& localizer,
+                                   const nlohmann::json& options_json, double wall_s,
+                                   double duration_s,
+                                   const std::optional<std::vector<Relation>>& relations,
+                                   const nlohmann::json* ros) const {
+  std::optional<double> first_pose_after_s;
   std::vector<StampedPose2> trajectory;
   for (const slam::LocalizedScan& s : scans) {
-    if (s.state != slam::LocalizationState::kLost) trajectory.push_back({s.t_s, s.T_map_robot});
+    if (s.state == slam::LocalizationState::kLost) continue;
+    if (!first_pose_after_s) first_pose_after_s = s.t_s - scans.front().t_s;
+    trajectory.push_back({s.t_s, s.T_map_robot});
   }
   std::optional<RelationMetric> metric;
   if (relations && !trajectory.empty()) {
@@ -143,10 +155,6 @@ int LocalizeCommand::run() const {
   }
 
   const slam::LocalizerStats& st = localizer.stats();
-  nlohmann::json options_json = {{"session", session_.string()},
-                                 {"input", input_.name()},
-                                 {"initial_pose", initial_pose_.value_or("")},
-                                 {"time_offset_s", time_offset_s_}};
   nlohmann::json report = core_report({"localize", std::nullopt, options_json, wall_s, duration_s});
   report["localization"] = {{"scans", st.scans},
                             {"localized_scans", st.tracked},
@@ -158,6 +166,7 @@ int LocalizeCommand::run() const {
                             {"tracking_wall_s", st.tracking_s},
                             {"search_wall_s", st.search_s}};
   if (metric) report["relations"] = relations_report(*metric, {})["relations"];
+  if (ros) report["ros"] = *ros;
 
   const OccupancyGrid picture_map = localizer.map().to_occupancy_grid(2);
   RenderLayers layers;

@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "dds_options.hpp"
+#include "laser_input.hpp"
 #include "tessera/io/carmen_log.hpp"
 #include "tessera/io/robot_bag.hpp"
 #include "tessera/io/ros_bag.hpp"
@@ -63,12 +64,20 @@ PlayCommand::PlayCommand(CLI::App& app) {
   sub_->add_option("--max-scans", max_scans_, "Stop after this many scans (0: the whole log)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  sub_->add_option("--from-s", from_s_, "Play the scans from this many seconds after the first one")
+      ->check(CLI::NonNegativeNumber);
+  sub_->add_option("--to-s", to_s_, "Play the scans up to this many seconds after the first one")
+      ->check(CLI::NonNegativeNumber);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
 }
 
 int PlayCommand::run() const {
+  if (Status s = check_window(from_s_, to_s_); !s) return report_error(s.error());
   Result<LaserLog> log = read_played_log(log_, scan_topic_, odom_topic_);
   if (!log.ok()) return report_error(log.error());
+  if (Status s = cut_to_window(*log, from_s_, to_s_, log_.string()); !s) {
+    return report_error(s.error());
+  }
   Result<std::unique_ptr<net::Transport>> transport = open_dds(domain_, network_);
   if (!transport.ok()) return report_error(transport.error());
   Result<std::unique_ptr<nodes::LogPlayer>> player =

@@ -19,15 +19,10 @@ namespace tessera::cli {
 namespace {
 
 nlohmann::json node_stats_json(const nodes::SlamNodeStats& s) {
-  return {{"scans_received", s.scans_received},
-          {"scans_added", s.scans_added},
-          {"scans_dropped_invalid", s.scans_dropped_invalid},
-          {"readings_dropped_invalid", s.readings_dropped_invalid},
-          {"scans_dropped_no_pose", s.scans_dropped_no_pose},
-          {"scans_dropped_overflow", s.scans_dropped_overflow},
-          {"odometry_received", s.odometry_received},
-          {"odometry_dropped_invalid", s.odometry_dropped_invalid},
-          {"maps_published", s.maps_published}};
+  nlohmann::json out = scan_input_json(s);
+  out["scans_added"] = s.scans_added;
+  out["maps_published"] = s.maps_published;
+  return out;
 }
 
 }  // namespace

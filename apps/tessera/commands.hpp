@@ -13,11 +13,13 @@
 #include "laser_input.hpp"
 #include "recording.hpp"
 #include "slam_live.hpp"
+#include "tessera/core/relation.hpp"
 #include "tessera/eval/trajectory_error.hpp"
 #include "tessera/mission/bob_mission.hpp"
 #include "tessera/mission/exploration_mission.hpp"
 #include "tessera/sensors/laser_log.hpp"
 #include "tessera/slam/laser_slam.hpp"
+#include "tessera/slam/localizer.hpp"
 
 namespace tessera::cli {
 
@@ -258,6 +260,22 @@ class LocalizeCommand : public Command {
   std::optional<std::filesystem::path> relations_;
   double time_offset_s_ = 0.0;
   bool quiet_ = false;
+  // --ros: the live localization node on Cyclone DDS (cmd_localize_ros.cpp).
+  void add_ros_options();
+  [[nodiscard]] int run_ros() const;
+  bool ros_ = false;
+  std::string ns_;
+  std::uint32_t domain_ = 0;
+  bool network_ = false;
+  double idle_exit_s_ = 0.0;
+  /// Scores, reports and writes a run's outputs (poses.csv, trajectory.txt, localization.png,
+  /// report.json with `ros`'s counts when given) and prints its summary; the exit code.
+  [[nodiscard]] int write_outputs(const std::vector<slam::LocalizedScan>& scans,
+                                  const slam::Localizer& localizer,
+                                  const nlohmann::json& options_json, double wall_s,
+                                  double duration_s,
+                                  const std::optional<std::vector<Relation>>& relations,
+                                  const nlohmann::json* ros) const;
 };
 
 /// tessera fusion: the thesis' Fusion SLAM on RGB-D data (fusion/). One mode per input: --pair DIR
@@ -373,6 +391,7 @@ class PlayCommand : public Command {
   bool network_ = false;
   double wait_s_ = 30.0;  // for the first subscriber
   std::int64_t max_scans_ = 0;
+  std::optional<double> from_s_, to_s_;
   bool quiet_ = false;
 };
 

@@ -23,4 +23,14 @@ Result<std::unique_ptr<net::Transport>> open_dds(std::uint32_t domain, bool netw
   return net::make_dds_transport({.domain_id = domain, .loopback_only = !network});
 }
 
+nlohmann::json scan_input_json(const nodes::ScanInputStats& s) {
+  return {{"scans_received", s.scans_received},
+          {"scans_dropped_invalid", s.scans_dropped_invalid},
+          {"readings_dropped_invalid", s.readings_dropped_invalid},
+          {"scans_dropped_no_pose", s.scans_dropped_no_pose},
+          {"scans_dropped_overflow", s.scans_dropped_overflow},
+          {"odometry_received", s.odometry_received},
+          {"odometry_dropped_invalid", s.odometry_dropped_invalid}};
+}
+
 }  // namespace tessera::cli

@@ -41,10 +41,7 @@ Status LaserInput::check() const {
     return usage_error("--scan-topic, --odom-topic and --base-frame need --bag");
   }
   if (!given() && (from_s || to_s)) return usage_error("--from-s and --to-s cut a --log or --bag");
-  if (from_s && to_s && !(*from_s < *to_s)) {
-    return usage_error(fmt::format("--from-s {} must be before --to-s {}", *from_s, *to_s));
-  }
-  return Ok{};
+  return check_window(from_s, to_s);
 }
 
 Result<LaserLog> LaserInput::read(nlohmann::json* bag_report) const {
@@ -59,19 +56,31 @@ Result<LaserLog> LaserInput::read(nlohmann::json* bag_report) const {
     if (bag_report) *bag_report = bag_json(*read);
     out = std::move(read->log);
   }
-  if ((from_s || to_s) && !out.scans.empty()) {
-    // In file order, by each scan's time since the first scan (CARMEN stamps may step back).
-    const double t0 = out.scans.front().t_s;
-    const double from = from_s.value_or(-INFINITY), to = to_s.value_or(INFINITY);
-    const auto outside = [&](double t_s) { return !(t_s - t0 >= from && t_s - t0 <= to); };
-    std::erase_if(out.scans, [&](const StampedScan& s) { return outside(s.t_s); });
-    std::erase_if(out.odometry, [&](const OdometryReading& o) { return outside(o.t_s); });
-    if (out.scans.empty()) {
-      return input_error(fmt::format("{}: no scan from {} s to {} s after its first scan", name(),
-                                     from_s.value_or(0.0), to));
-    }
-  }
+  if (Status s = cut_to_window(out, from_s, to_s, name()); !s) return s.error();
   return out;
+}
+
+Status check_window(std::optional<double> from_s, std::optional<double> to_s) {
+  if (from_s && to_s && !(*from_s < *to_s)) {
+    return usage_error(fmt::format("--from-s {} must be before --to-s {}", *from_s, *to_s));
+  }
+  return Ok{};
+}
+
+Status cut_to_window(LaserLog& log, std::optional<double> from_s, std::optional<double> to_s,
+                     const std::string& name) {
+  if ((!from_s && !to_s) || log.scans.empty()) return Ok{};
+  // In file order, by each scan's time since the first scan (CARMEN stamps may step back).
+  const double t0 = log.scans.front().t_s;
+  const double from = from_s.value_or(-INFINITY), to = to_s.value_or(INFINITY);
+  const auto outside = [&](double t_s) { return !(t_s - t0 >= from && t_s - t0 <= to); };
+  std::erase_if(log.scans, [&](const StampedScan& s) { return outside(s.t_s); });
+  std::erase_if(log.odometry, [&](const OdometryReading& o) { return outside(o.t_s); });
+  if (log.scans.empty()) {
+    return input_error(fmt::format("{}: no scan from {} s to {} s after its first scan", name,
+                                   from_s.value_or(0.0), to));
+  }
+  return Ok{};
 }
 
 }  // namespace tessera::cli

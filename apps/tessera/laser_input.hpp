@@ -34,4 +34,12 @@ struct LaserInput {
   [[nodiscard]] Result<LaserLog> read(nlohmann::json* bag_report) const;
 };
 
+/// Usage error when a window's --from-s is not before its --to-s.
+[[nodiscard]] Status check_window(std::optional<double> from_s, std::optional<double> to_s);
+
+/// Keeps the scans (and odometry) of `log` from `from_s` to `to_s` seconds after its first scan
+/// (either may be open). Input error naming `name` when none is left.
+[[nodiscard]] Status cut_to_window(LaserLog& log, std::optional<double> from_s,
+                                   std::optional<double> to_s, const std::string& name);
+
 }  // namespace tessera::cli

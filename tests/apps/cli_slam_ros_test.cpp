@@ -6,50 +6,20 @@
 
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
-#include <thread>
 
-#include "cli_run.hpp"
+#include "live_play.hpp"
 #include "support/data.hpp"
 #include "support/dds_isolation.hpp"
-#include "support/temp_dir.hpp"
 
 namespace tessera {
 namespace {
 
+using support::LivePlay;
 using ::testing::HasSubstr;
 
-// `tessera slam --ros` in the background and `tessera play <play_args>` into it, on this test's
-// DDS domain. The SLAM node finishes 3 s after the last scan (at most 300 s: if the player fails,
-// no scan comes and nothing else would stop it). Returns the player's run and the node's report
-// (null when it wrote none; `slam_said` then holds its output).
-struct LivePlay {
-  support::CliRun play;
-  nlohmann::json report;
-  std::string slam_said;
-};
-
 LivePlay play_into_live_slam(const support::TempDir& dir, const std::string& play_args) {
-  const std::string domain = std::to_string(support::test_dds_domain());
-  const std::string out = (dir.path() / "slam").string();
-  const std::string slam_cmd =
-      "timeout 300 " + std::string(TESSERA_CLI) + " slam --ros --quiet --domain " + domain +
-      " --idle-exit-s 3 --out " + out + " > " + (dir.path() / "slam.txt").string() + " 2>&1";
-  std::thread slam([&] { std::system(slam_cmd.c_str()); });
-  LivePlay run;
-  run.play = support::run_cli("play " + play_args + " --domain " + domain + " --wait-s 60");
-  slam.join();
-  std::ifstream in(dir.path() / "slam" / "report.json");
-  if (in) {
-    run.report = nlohmann::json::parse(in);
-  } else {
-    std::ostringstream said;
-    said << std::ifstream(dir.path() / "slam.txt").rdbuf();
-    run.slam_said = said.str();
-  }
-  return run;
+  return support::play_into_node(dir, "slam --ros", play_args);
 }
 
 TEST(CliSlamRos, PlayedScansAreAllMappedByTheLiveNode) {
@@ -59,13 +29,13 @@ TEST(CliSlamRos, PlayedScansAreAllMappedByTheLiveNode) {
   const LivePlay run = play_into_live_slam(dir, log.string() + " --rate 10 --max-scans 400");
   EXPECT_EQ(run.play.exit_code, 0) << run.play.output;
   EXPECT_THAT(run.play.output, HasSubstr("play: 400 scans published"));
-  ASSERT_FALSE(run.report.is_null()) << "no report; slam said: " << run.slam_said;
+  ASSERT_FALSE(run.report.is_null()) << "no report; slam said: " << run.node_said;
   EXPECT_EQ(run.report["ros"]["scans_received"], 400);
   EXPECT_EQ(run.report["ros"]["scans_added"], 400);
   EXPECT_EQ(run.report["ros"]["scans_dropped_overflow"], 0);
   EXPECT_GE(run.report["ros"]["maps_published"].get<int>(), 1);
-  EXPECT_TRUE(std::filesystem::exists(dir.path() / "slam" / "map.png"));
-  EXPECT_TRUE(std::filesystem::exists(dir.path() / "slam" / "trajectory.txt"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "node" / "map.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "node" / "trajectory.txt"));
 }
 
 // A ROS 2 bag played as topics: every scan the offline reader finds in it is mapped live.
@@ -76,7 +46,7 @@ TEST(CliSlamRos, PlayedBagScansAreAllMappedByTheLiveNode) {
   const LivePlay run = play_into_live_slam(dir, bag.string() + " --scan-topic /scan --rate 10");
   EXPECT_EQ(run.play.exit_code, 0) << run.play.output;
   EXPECT_THAT(run.play.output, HasSubstr("play: 153 scans published"));
-  ASSERT_FALSE(run.report.is_null()) << "no report; slam said: " << run.slam_said;
+  ASSERT_FALSE(run.report.is_null()) << "no report; slam said: " << run.node_said;
   EXPECT_EQ(run.report["ros"]["scans_received"], 153);
   EXPECT_EQ(run.report["ros"]["scans_added"], 153);
 }

@@ -1,17 +1,11 @@
 #pragma once
 // Live laser SLAM as a ROS 2 node (issue 14), the pipeline of slam/laser_slam.hpp fed from topics
 // instead of a file. In namespace `ns` ("/r1", or "" for none):
-//   subscribes <ns>/scan sensor_msgs/LaserScan, <ns>/odom nav_msgs/Odometry (best effort, so any
-//              driver's sensor-data publisher matches; a deep queue holds scans while SLAM works),
-//              /tf_static and /tf (the laser's place on the robot: base frame -> scan frame)
+//   subscribes <ns>/scan, <ns>/odom, /tf_static and /tf, paired as nodes/scan_input.hpp says
+//              (a scan is added once its odometry is known)
 //   publishes  <ns>/map nav_msgs/OccupancyGrid (reliable, transient local: a late viewer gets it)
 //              at least once per map_period_wall_s while scans arrive, /tf map -> odom (REP-105),
 //              and <ns>/pose geometry_msgs/PoseWithCovarianceStamped (T_map_base per scan).
-// A scan is added once an odometry message with its stamp is in, or one stamped after it has
-// arrived after it; its odometry is then interpolated between the two messages around its stamp,
-// as the bag reader does. So a scan and an odometry message with the same stamp, as `tessera
-// play` sends them, give the offline pipeline's input exactly, in whatever order DDS delivers
-// the two topics and even where a log's stamps go backwards.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -22,6 +16,7 @@
 #include "tessera/core/result.hpp"
 #include "tessera/grid/occupancy_grid.hpp"
 #include "tessera/net/transport.hpp"
+#include "tessera/nodes/scan_input.hpp"
 #include "tessera/slam/laser_slam.hpp"
 
 namespace tessera::nodes {
@@ -38,16 +33,9 @@ struct SlamNodeOptions {
   slam::LaserSlamOptions slam{};
 };
 
-/// What came in and what became of it; "dropped" counts are messages refused as invalid.
-struct SlamNodeStats {
-  std::uint64_t scans_received = 0;
+/// What came in (ScanInputStats) and what became of it.
+struct SlamNodeStats : ScanInputStats {
   std::uint64_t scans_added = 0;
-  std::uint64_t scans_dropped_invalid = 0;     // did not decode, unusable angles, no valid range
-  std::uint64_t readings_dropped_invalid = 0;  // NaN or negative ranges (REP-117), not used
-  std::uint64_t scans_dropped_no_pose = 0;     // no odometry or no laser transform for them
-  std::uint64_t scans_dropped_overflow = 0;    // the wait queue was full
-  std::uint64_t odometry_received = 0;
-  std::uint64_t odometry_dropped_invalid = 0;  // did not decode or not finite
   std::uint64_t maps_published = 0;
 };
 

@@ -1,0 +1,104 @@
+// tessera localize --ros: the live localization node (nodes/localizer_node.hpp) on Cyclone DDS. It
+// localizes what arrives on <ns>/scan and <ns>/odom in a saved session's map until Ctrl-C, SIGTERM
+// or --idle-exit-s without a scan, publishing the pose as it goes, then writes what `tessera
+// localize --log` writes, with the node's message counts in report.json.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "dds_options.hpp"
+#include "session_map.hpp"
+#include "tessera/io/relations_file.hpp"
+#include "tessera/io/session_file.hpp"
+#include "tessera/nodes/localizer_node.hpp"
+
+namespace tessera::cli {
+
+void LocalizeCommand::add_ros_options() {
+  sub_->add_flag("--ros", ros_,
+                 "Live localization node on Cyclone DDS: subscribe <ns>/scan, <ns>/odom, /tf, "
+                 "/tf_static; publish <ns>/map (the session's map, once), <ns>/pose with its "
+                 "covariance and map -> odom on /tf for every scan that has a pose");
+  sub_->add_option("--ns", ns_, "--ros: namespace of the topics, e.g. /r1 (default: none)");
+  add_dds_options(*sub_, domain_, network_);
+  sub_->add_option("--idle-exit-s", idle_exit_s_,
+                   "--ros: finish when no scan has arrived for this long (0: run until stopped)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+}
+
+int LocalizeCommand::run_ros() const {
+  if (input_.given()) {
+    return report_error(usage_error("--ros localizes the topics: give no --log or --bag"));
+  }
+  if (Status s = input_.check(); !s) return report_error(s.error());  // --from-s without input
+  if (!std::isfinite(time_offset_s_)) {
+    return report_error(usage_error("--time-offset must be a finite number of seconds"));
+  }
+  nodes::LocalizerNodeOptions options;
+  options.ns = ns_;
+  if (initial_pose_) {
+    Result<Pose2> p = parse_pose(*initial_pose_, "--initial-pose");
+    if (!p) return report_error(p.error());
+    options.initial_pose = *p;
+  }
+  Result<Session> session = read_session(session_);
+  if (!session) return report_error(session.error());
+  if (session->scans.empty()) {
+    return report_error(input_error(session_.string() + ": the session holds no scans"));
+  }
+  std::optional<std::vector<Relation>> relations;
+  if (relations_) {
+    Result<std::vector<Relation>> read = read_relations(*relations_);
+    if (!read) return report_error(read.error());
+    relations = std::move(read).value();
+  }
+  Result<slam::ProbabilityGrid> map =
+      session_frozen_map(*session, options.localizer, session_.string());
+  if (!map) return report_error(map.error());
+
+  Result<std::unique_ptr<net::Transport>> transport = open_dds(domain_, network_);
+  if (!transport.ok()) return report_error(transport.error());
+  Result<std::unique_ptr<nodes::LocalizerNode>> node =
+      nodes::LocalizerNode::create(std::move(map).value(), session->map, options, **transport);
+  if (!node.ok()) return report_error(node.error());
+
+  const StopSignals stop;
+  ProgressLine progress(!quiet_ && stderr_is_terminal());
+  const auto t0 = std::chrono::steady_clock::now();
+  auto last_scan = t0;
+  std::uint64_t received = 0;
+  while (!StopSignals::requested()) {
+    (*transport)->wait(0.05);
+    if (Result<int> taken = (*node)->spin_once(); !taken.ok()) return report_error(taken.error());
+    const nodes::LocalizerNodeStats& st = (*node)->stats();
+    if (st.scans_received != received) {
+      received = st.scans_received;
+      last_scan = std::chrono::steady_clock::now();
+      progress.show(fmt::format("localize --ros: {} scans received, {} localized", received,
+                                st.scans_localized));
+    }
+    if (idle_exit_s_ > 0.0 && received > 0 && seconds_since(last_scan) > idle_exit_s_) break;
+  }
+  progress.finish();
+  if (Status s = (*node)->finish(); !s) return report_error(s.error());
+  const std::vector<slam::LocalizedScan>& scans = (*node)->scans();
+  if (scans.empty()) {
+    return report_error(input_error("localize --ros: no scan with odometry arrived"));
+  }
+  const nodes::LocalizerNodeStats& st = (*node)->stats();
+  nlohmann::json ros = scan_input_json(st);
+  ros["scans_localized"] = st.scans_localized;
+  ros["scans_lost"] = st.scans_lost;
+  const nlohmann::json options_json = {{"session", session_.string()},
+                                       {"input", "ros"},
+                                       {"ns", ns_},
+                                       {"initial_pose", initial_pose_.value_or("")},
+                                       {"time_offset_s", time_offset_s_}};
+  return write_outputs(scans, (*node)->localizer(), options_json, seconds_since(t0),
+                       scans.back().t_s - scans.front().t_s, relations, &ros);
+}
+
+}  // namespace tessera::cli

@@ -1,0 +1,139 @@
+// The live localization node (nodes/localizer_node.hpp): paired scans in (nodes/scan_input.hpp),
+// the localizer in the middle, the frozen map once, pose with covariance and map -> odom out.
+#include "tessera/nodes/localizer_node.hpp"
+
+#include "tessera/io/ros_message_encoders.hpp"
+#include "tessera/net/ros_names.hpp"
+#include "tessera/record/ros_conversions.hpp"
+
+namespace tessera::nodes {
+namespace {
+
+using net::Qos;
+using net::Transport;
+
+/// ROS's 6x6 row-major pose covariance (x, y, z, roll, pitch, yaw) of a planar (x, y, yaw) one;
+/// the three axes a planar robot does not move in stay 0, as AMCL leaves them.
+RosCovariance ros_covariance(const Eigen::Matrix3d& planar) {
+  RosCovariance out{};
+  constexpr int kAxis[3] = {0, 1, 5};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      out[static_cast<std::size_t>(kAxis[r] * 6 + kAxis[c])] = planar(r, c);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+struct LocalizerNode::State {
+  LocalizerNodeOptions options;
+  Transport& transport;
+  std::unique_ptr<ScanInput> input;
+  slam::Localizer localizer;
+  mutable LocalizerNodeStats stats;  // the input's part is copied in when asked
+  std::vector<slam::LocalizedScan> scans;
+  Transport::WriterId map_writer = 0, tf_writer = 0, pose_writer = 0;
+
+  State(slam::ProbabilityGrid map, const LocalizerNodeOptions& o, Transport& t,
+        std::unique_ptr<ScanInput> in)
+      : options(o), transport(t), input(std::move(in)), localizer(std::move(map), o.localizer) {
+    if (o.initial_pose) localizer.set_pose(*o.initial_pose);
+  }
+
+  Status connect(const OccupancyGrid& picture) {
+    const std::string map_topic = *net::resolve_topic_name("map", options.ns);
+    const std::string pose_topic = *net::resolve_topic_name("pose", options.ns);
+    for (Status st :
+         {transport.advertise({map_topic, std::string(kRos2OccupancyGrid), Qos::map()}, map_writer),
+          transport.advertise({"/tf", std::string(kRos2TfMessage), Qos::tf()}, tf_writer),
+          transport.advertise(
+              {pose_topic, std::string(kRos2PoseWithCovarianceStamped), Qos::reliable(10)},
+              pose_writer)}) {
+      if (!st.ok()) return st;
+    }
+    // Transient local: published once, kept for every reader that joins later.
+    return transport.publish(map_writer,
+                             encode_cdr(occupancy_grid_message(picture, 0, options.map_frame)));
+  }
+
+  // Localizes the next scan whose odometry is known (all that wait, with `flush`); false when
+  // none.
+  Result<bool> take_next(bool flush) {
+    std::optional<ReadyScan> ready = input->next(flush);
+    if (!ready) return false;
+    const slam::LocalizedScan& s = scans.emplace_back(localizer.add_scan(ready->scan));
+    if (s.state == slam::LocalizationState::kLost) {
+      ++stats.scans_lost;
+      return true;
+    }
+    ++stats.scans_localized;
+    if (Status p = publish_pose(ready->stamp_ns, s, ready->scan.odometry); !p.ok()) {
+      return p.error();
+    }
+    return true;
+  }
+
+  Status publish_pose(std::int64_t stamp_ns, const slam::LocalizedScan& s,
+                      const Pose2& T_odom_base) {
+    PoseWithCovarianceStampedMessage pose;
+    pose.header = {stamp_ns, options.map_frame};
+    pose.pose = planar_transform(s.T_map_robot.x, s.T_map_robot.y, s.T_map_robot.theta);
+    pose.covariance = ros_covariance(s.covariance);
+    if (Status st = transport.publish(pose_writer, encode_cdr(pose)); !st.ok()) return st;
+    TfMessage map_to_odom;
+    map_to_odom.transforms.push_back(planar_transform_stamped(
+        s.T_map_robot * T_odom_base.inverse(), stamp_ns, options.map_frame, input->odom_frame()));
+    return transport.publish(tf_writer, encode_cdr(map_to_odom));
+  }
+};
+
+LocalizerNode::LocalizerNode(std::unique_ptr<State> state) : state_(std::move(state)) {}
+LocalizerNode::~LocalizerNode() = default;
+
+Result<std::unique_ptr<LocalizerNode>> LocalizerNode::create(slam::ProbabilityGrid map,
+                                                             const OccupancyGrid& picture,
+                                                             const LocalizerNodeOptions& options,
+                                                             Transport& transport) {
+  if (auto problem = slam::validate(options.localizer)) {
+    return usage_error("localizer node: " + *problem);
+  }
+  if (options.queue_depth == 0) return usage_error("localizer node: queue_depth must be > 0");
+  Result<std::unique_ptr<ScanInput>> input =
+      ScanInput::create(options.ns, options.queue_depth, transport);
+  if (!input.ok()) return input.error();
+  auto state =
+      std::make_unique<State>(std::move(map), options, transport, std::move(input).value());
+  if (Status s = state->connect(picture); !s.ok()) return s.error();
+  return std::unique_ptr<LocalizerNode>(new LocalizerNode(std::move(state)));
+}
+
+Result<int> LocalizerNode::spin_once() {
+  state_->transport.poll();
+  int taken = 0;
+  for (;;) {
+    Result<bool> progressed = state_->take_next(false);
+    if (!progressed.ok()) return progressed.error();
+    if (!*progressed) return taken;
+    ++taken;
+  }
+}
+
+Status LocalizerNode::finish() {
+  state_->transport.poll();
+  for (;;) {
+    Result<bool> progressed = state_->take_next(true);
+    if (!progressed.ok()) return progressed.error();
+    if (!*progressed) return Ok{};
+  }
+}
+
+const std::vector<slam::LocalizedScan>& LocalizerNode::scans() const { return state_->scans; }
+const LocalizerNodeStats& LocalizerNode::stats() const {
+  static_cast<ScanInputStats&>(state_->stats) = state_->input->stats();
+  return state_->stats;
+}
+const slam::Localizer& LocalizerNode::localizer() const { return state_->localizer; }
+
+}  // namespace tessera::nodes

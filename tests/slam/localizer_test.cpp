@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "support/text_world.hpp"
@@ -152,6 +153,64 @@ TEST(Localizer, ASymmetricRoomIsNeverClaimed) {
   }
   EXPECT_GT(localizer.stats().searches, 0);
   EXPECT_EQ(localizer.stats().ambiguous, localizer.stats().searches);
+}
+
+TEST(Localizer, AViewThatSeesThroughTheMapsWallsIsRefused) {
+  // An L-shaped room (no symmetry), mapped; then the map gets a 1.5 m block of wall in the middle
+  // of the room, where the robot now sees open floor (furniture since removed, or a look-alike
+  // place whose walls fit the returns but stand in the view's free space). The returns still fit
+  // the room's walls best, unambiguously: only the free-space test refuses the place, and with
+  // that test switched off the same search accepts it.
+  std::vector<std::string> rows(40, "#" + std::string(58, '.') + "#");
+  rows.front() = rows.back() = std::string(60, '#');
+  for (int y = 1; y <= 15; ++y) rows[static_cast<std::size_t>(y)].replace(40, 19, 19, '#');
+  const World room = support::text_world(rows, 0.1);
+  LaserRunOptions o;
+  o.lidar.max_range_m = 10.0;
+  o.scan_rate_hz = 5.0;
+  o.max_duration_s = 10.0;
+  Result<SimulatedLaserRun> run = simulate_laser_run(room, o, 7);
+  ASSERT_TRUE(run.ok()) << run.error().message;
+  std::vector<const StampedScan*> scans;
+  std::vector<Pose2> poses;
+  for (std::size_t i = 0; i < run->log.scans.size(); ++i) {
+    scans.push_back(&run->log.scans[i]);
+    poses.push_back(run->truth[i].pose);
+  }
+  LocalizerOptions options;
+  ProbabilityGrid map = frozen_map(scans, poses, options.points, {}, 0.05);
+  const GridGeometry& g = map.geometry();
+  int blocked = 0;
+  for (double y = 1.2; y < 2.7; y += 0.025) {
+    for (double x = 1.5; x < 3.0; x += 0.025) {
+      const Cell c = g.cell_at_unchecked({x, y});
+      if (g.contains(c) && map.known(c)) {
+        map.set_probability(c, 0.9);
+        ++blocked;
+      }
+    }
+  }
+  ASSERT_GT(blocked, 500);
+
+  const auto confident_poses = [&](const LocalizerOptions& with) {
+    Localizer localizer(map, with);
+    std::vector<LocalizedScan> confident;
+    for (const StampedScan& scan : run->log.scans) {
+      const LocalizedScan at = localizer.add_scan(scan);
+      if (at.confident) confident.push_back(at);
+    }
+    return confident;
+  };
+  EXPECT_TRUE(confident_poses(options).empty());
+  options.max_free_conflict = 1.0;
+  const std::vector<LocalizedScan> accepted = confident_poses(options);
+  ASSERT_FALSE(accepted.empty());
+  const std::size_t i = static_cast<std::size_t>(
+      std::find_if(run->log.scans.begin(), run->log.scans.end(),
+                   [&](const StampedScan& s) { return s.t_s == accepted.front().t_s; }) -
+      run->log.scans.begin());
+  ASSERT_LT(i, run->truth.size());
+  EXPECT_LT(error_of(accepted.front().T_map_robot, run->truth[i].pose).m, 0.1);
 }
 
 TEST(Localizer, OptionsOutsideTheirRangeAreNamed) {

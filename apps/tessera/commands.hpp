@@ -84,6 +84,22 @@ class RenderCommand : public Command {
   int pixels_per_cell_ = 0;
 };
 
+/// tessera gridmatch: one step of the lecture's grid-matching SLAM drawn for a student
+/// (cmd_gridmatch.cpp).
+class GridmatchCommand : public Command {
+ public:
+  explicit GridmatchCommand(CLI::App& app);
+  [[nodiscard]] int run() const;
+
+ private:
+  WorldSource world_;
+  double cell_m_ = 0.3;
+  std::optional<std::string> before_, odometry_, actual_;  // "X,Y,THETA"
+  int range_cells_ = 5;
+  std::filesystem::path out_ = "out/gridmatch";
+  bool quiet_ = false;
+};
+
 /// tessera info: describes a map file, or a ROS bag (topics, types, counts, rates, duration).
 class InfoCommand : public Command {
  public:

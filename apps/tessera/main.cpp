@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   TeamCommand team(app);
   SessionCommand session(app);
   LocalizeCommand localize(app);
+  GridmatchCommand gridmatch(app);
   add_config_options(app);
 
   try {
@@ -52,5 +53,6 @@ int main(int argc, char** argv) {
   if (team.parsed()) return team.run();
   if (session.parsed()) return session.run();
   if (localize.parsed()) return localize.run();
+  if (gridmatch.parsed()) return gridmatch.run();
   return kExitUsage;
 }

@@ -100,10 +100,26 @@ World bob_arena(double asked_resolution_m, bool closed) {
                          resolution_m, "builtin:bob-arena-open");
 }
 
+// The lecture's numerical SLAM example ("Numerical example for a SLAM algorithm"): a robot near a
+// corner of a room, with a projection of the wall to its left (a supporting pillar); cells of
+// 0.3 m, "roughly the same size as the robot itself", walls one cell thick. The slides' figures
+// are not in the notes, so this is a room consistent with the text: 12 x 9 cells, the wall ahead
+// and the left wall make the corner, the pillar is two cells high, the right side stays open.
+constexpr double kLectureCellM = 0.3;
+
+World lecture_corner(double resolution_m) {
+  constexpr double c = kLectureCellM;
+  const std::vector<Box> walls = {{0, 0, 12 * c, c},          // the wall behind
+                                  {0, 8 * c, 12 * c, 9 * c},  // the wall ahead
+                                  {0, 0, c, 9 * c},           // the left wall
+                                  {c, 5 * c, 2 * c, 7 * c}};  // the pillar
+  return rasterize_boxes(walls, 12 * c, 9 * c, resolution_m, "builtin:lecture-corner");
+}
+
 }  // namespace
 
 std::vector<std::string> builtin_world_names() {
-  return {"office", "labyrinth", "bob-arena", "bob-arena-open"};
+  return {"office", "labyrinth", "bob-arena", "bob-arena-open", "lecture-corner"};
 }
 
 World builtin_world(const std::string& name, double resolution_m) {
@@ -111,6 +127,7 @@ World builtin_world(const std::string& name, double resolution_m) {
   if (name == "labyrinth") return labyrinth(resolution_m);
   if (name == "bob-arena") return bob_arena(resolution_m, true);
   if (name == "bob-arena-open") return bob_arena(resolution_m, false);
+  if (name == "lecture-corner") return lecture_corner(resolution_m);
   return World();
 }
 

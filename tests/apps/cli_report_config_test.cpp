@@ -49,6 +49,7 @@ std::vector<Case> cases(const TempDir& dir) {
   return {
       {"explore", "explore --quiet --max-steps 200"},
       {"bob", "bob --quiet"},
+      {"gridmatch", "gridmatch --quiet"},
       {"slam", "slam --quiet --builtin office --duration-s 20"},
       {"eval relations", "eval relations --trajectory " + (dir / "traj.txt").string() +
                              " --relations " + (dir / "rel.txt").string()},

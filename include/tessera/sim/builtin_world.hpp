@@ -16,6 +16,9 @@ namespace tessera {
 /// with polystyrene barriers, closed by boards; "bob-arena-open": the same barriers on an open
 /// floor 0.44 m wider all round (crop 0.44,0.44,2.86,3.52 for the 11 x 14 grid). Both are drawn
 /// at 0.22 / n m, n >= 20, the coarsest such resolution no coarser than `resolution_m`.
+/// "lecture-corner": the corner of a room with a pillar from the lecture's numerical SLAM example,
+/// 12 x 9 cells of 0.3 m (3.6 m x 2.7 m), open on the right; `tessera gridmatch` runs the example
+/// in it at 0.3 m.
 [[nodiscard]] World builtin_world(const std::string& name, double resolution_m = 0.1);
 
 }  // namespace tessera

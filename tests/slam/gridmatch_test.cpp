@@ -13,6 +13,7 @@
 
 #include "tessera/core/rng.hpp"
 #include "tessera/sensors/lidar.hpp"
+#include "tessera/sim/builtin_world.hpp"
 #include "tessera/sim/simulator.hpp"
 #include "tessera/sim/world.hpp"
 
@@ -159,20 +160,17 @@ double position_error(const Pose2& a, const Pose2& b) {
 constexpr double kCellM = 0.3;  // "roughly the same size as the robot itself"
 constexpr double kRangeM = 5.0 * kCellM;
 
-const std::vector<std::string>& lecture_room() {
-  static const std::vector<std::string> rows{
-      "############",  // y = 8: the wall ahead; with the left wall it makes the corner
-      "#...........",  // y = 7
-      "##..........",  // y = 6: the pillar
-      "##..........",  // y = 5: the pillar
-      "#...........",  // y = 4: the robot after the move, (3, 4)
-      "#...........",  // y = 3: the robot before the move, (3, 3)
-      "#...........",  // y = 2
-      "#...........",  // y = 1
-      "############",  // y = 0
-  };
-  return rows;
-}
+/// The room (sim/builtin_world.cpp, "lecture-corner"), top row y = 8 first:
+///   ############   the wall ahead; with the left wall it makes the corner
+///   #...........
+///   ##..........   y = 6: the pillar
+///   ##..........   y = 5: the pillar
+///   #...........   y = 4: the robot after the move, (3, 4)
+///   #...........   y = 3: the robot before the move, (3, 3)
+///   #...........
+///   #...........
+///   ############   y = 0
+World lecture_room() { return builtin_world("lecture-corner", kCellM); }
 
 LidarOptions lecture_lidar() {
   LidarOptions o;
@@ -202,7 +200,7 @@ OccupancyGrid lecture_current_map(const World& room) {
 }
 
 TEST(LectureExample, CurrentMapIsWhatTheRobotSawBeforeTheMove) {
-  const World room = ascii_world(lecture_room(), kCellM);
+  const World room = lecture_room();
   // The corner and the pillar are known; the wall behind the pillar and everything beyond five
   // cells is unexplored ("?").
   EXPECT_THAT(rows_of(lecture_current_map(room)), ElementsAre("?#####??????",  //
@@ -217,7 +215,7 @@ TEST(LectureExample, CurrentMapIsWhatTheRobotSawBeforeTheMove) {
 }
 
 TEST(LectureExample, ActualPerceptionShowsTheWallsTurnedBy15Degrees) {
-  const World room = ascii_world(lecture_room(), kCellM);
+  const World room = lecture_room();
   const Pose2 actual = at_cell(3, 4, 0.5 * kPi - 15.0 * kDeg);
   const TernaryGrid p =
       perception_from_scan(ideal_scan(room, actual, lecture_lidar()), lecture_window());
@@ -236,7 +234,7 @@ TEST(LectureExample, ActualPerceptionShowsTheWallsTurnedBy15Degrees) {
 }
 
 TEST(LectureExample, CorrectPositionWith15DegreesClockwiseWins) {
-  const World room = ascii_world(lecture_room(), kCellM);
+  const World room = lecture_room();
   const OccupancyGrid map = lecture_current_map(room);
   const Pose2 odometry = at_cell(3, 4, 0.5 * kPi);  // "intended": one cell up, heading kept
   const Pose2 actual = at_cell(3, 4, 0.5 * kPi - 15.0 * kDeg);
@@ -283,7 +281,7 @@ TEST(LectureExample, CorrectPositionWith15DegreesClockwiseWins) {
 }
 
 TEST(LectureExample, UpdateAtTheWinningPoseAddsTheNewlySeenArea) {
-  const World room = ascii_world(lecture_room(), kCellM);
+  const World room = lecture_room();
   OccupancyGrid map = lecture_current_map(room);
   const Pose2 actual = at_cell(3, 4, 0.5 * kPi - 15.0 * kDeg);
   const RangeScan scan = ideal_scan(room, actual, lecture_lidar());

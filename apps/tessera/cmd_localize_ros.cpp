@@ -65,24 +65,20 @@ int LocalizeCommand::run_ros() const {
       nodes::LocalizerNode::create(std::move(map).value(), session->map, options, **transport);
   if (!node.ok()) return report_error(node.error());
 
-  const StopSignals stop;
-  ProgressLine progress(!quiet_ && stderr_is_terminal());
   const auto t0 = std::chrono::steady_clock::now();
-  auto last_scan = t0;
-  std::uint64_t received = 0;
-  while (!StopSignals::requested()) {
-    (*transport)->wait(0.05);
-    if (Result<int> taken = (*node)->spin_once(); !taken.ok()) return report_error(taken.error());
-    const nodes::LocalizerNodeStats& st = (*node)->stats();
-    if (st.scans_received != received) {
-      received = st.scans_received;
-      last_scan = std::chrono::steady_clock::now();
-      progress.show(fmt::format("localize --ros: {} scans received, {} localized", received,
-                                st.scans_localized));
-    }
-    if (idle_exit_s_ > 0.0 && received > 0 && seconds_since(last_scan) > idle_exit_s_) break;
-  }
-  progress.finish();
+  nodes::LocalizerNode& live = **node;
+  const Status ran = run_live_node(
+      **transport, idle_exit_s_, !quiet_ && stderr_is_terminal(),
+      [&]() -> Status {
+        if (Result<int> taken = live.spin_once(); !taken.ok()) return taken.error();
+        return Ok{};
+      },
+      [&] { return live.stats().scans_received; },
+      [&] {
+        return fmt::format("localize --ros: {} scans received, {} localized",
+                           live.stats().scans_received, live.stats().scans_localized);
+      });
+  if (!ran.ok()) return report_error(ran.error());
   if (Status s = (*node)->finish(); !s) return report_error(s.error());
   const std::vector<slam::LocalizedScan>& scans = (*node)->scans();
   if (scans.empty()) {

@@ -59,24 +59,20 @@ int SlamCommand::run_ros() const {
   Result<std::unique_ptr<nodes::SlamNode>> node = nodes::SlamNode::create(options, **transport);
   if (!node.ok()) return report_error(node.error());
 
-  const StopSignals stop;
-  ProgressLine progress(!quiet_ && stderr_is_terminal());
   const auto t0 = std::chrono::steady_clock::now();
-  auto last_scan = t0;
-  std::uint64_t received = 0;
-  while (!StopSignals::requested()) {
-    (*transport)->wait(0.05);
-    if (Result<int> added = (*node)->spin_once(); !added.ok()) return report_error(added.error());
-    const nodes::SlamNodeStats& st = (*node)->stats();
-    if (st.scans_received != received) {
-      received = st.scans_received;
-      last_scan = std::chrono::steady_clock::now();
-      progress.show(
-          fmt::format("slam --ros: {} scans received, {} mapped", received, st.scans_added));
-    }
-    if (idle_exit_s_ > 0.0 && received > 0 && seconds_since(last_scan) > idle_exit_s_) break;
-  }
-  progress.finish();
+  nodes::SlamNode& live = **node;
+  const Status ran = run_live_node(
+      **transport, idle_exit_s_, !quiet_ && stderr_is_terminal(),
+      [&]() -> Status {
+        if (Result<int> added = live.spin_once(); !added.ok()) return added.error();
+        return Ok{};
+      },
+      [&] { return live.stats().scans_received; },
+      [&] {
+        return fmt::format("slam --ros: {} scans received, {} mapped", live.stats().scans_received,
+                           live.stats().scans_added);
+      });
+  if (!ran.ok()) return report_error(ran.error());
   Result<slam::LaserSlamResult> result = (*node)->finish();
   if (!result.ok()) return report_error(result.error());
   const double wall_s = seconds_since(t0);

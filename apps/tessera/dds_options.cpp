@@ -1,8 +1,10 @@
 #include "dds_options.hpp"
 
+#include <chrono>
 #include <cstdlib>
 #include <string>
 
+#include "cli_support.hpp"
 #include "tessera/net/dds_transport.hpp"
 
 namespace tessera::cli {
@@ -21,6 +23,28 @@ void add_dds_options(CLI::App& command, std::uint32_t& domain, bool& network) {
 
 Result<std::unique_ptr<net::Transport>> open_dds(std::uint32_t domain, bool network) {
   return net::make_dds_transport({.domain_id = domain, .loopback_only = !network});
+}
+
+Status run_live_node(net::Transport& transport, double idle_exit_s, bool show_progress,
+                     const std::function<Status()>& spin,
+                     const std::function<std::uint64_t()>& scans_received,
+                     const std::function<std::string()>& progress_text) {
+  const StopSignals stop;
+  ProgressLine progress(show_progress);
+  auto last_scan = std::chrono::steady_clock::now();
+  std::uint64_t received = 0;
+  while (!StopSignals::requested()) {
+    transport.wait(0.05);
+    if (Status s = spin(); !s.ok()) return s;
+    if (scans_received() != received) {
+      received = scans_received();
+      last_scan = std::chrono::steady_clock::now();
+      progress.show(progress_text());
+    }
+    if (idle_exit_s > 0.0 && received > 0 && seconds_since(last_scan) > idle_exit_s) break;
+  }
+  progress.finish();
+  return Ok{};
 }
 
 nlohmann::json scan_input_json(const nodes::ScanInputStats& s) {

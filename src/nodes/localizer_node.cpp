@@ -2,14 +2,11 @@
 // the localizer in the middle, the frozen map once, pose with covariance and map -> odom out.
 #include "tessera/nodes/localizer_node.hpp"
 
-#include "tessera/io/ros_message_encoders.hpp"
-#include "tessera/net/ros_names.hpp"
-#include "tessera/record/ros_conversions.hpp"
+#include "tessera/nodes/pose_outputs.hpp"
 
 namespace tessera::nodes {
 namespace {
 
-using net::Qos;
 using net::Transport;
 
 /// ROS's 6x6 row-major pose covariance (x, y, z, roll, pitch, yaw) of a planar (x, y, yaw) one;
@@ -34,28 +31,16 @@ struct LocalizerNode::State {
   slam::Localizer localizer;
   mutable LocalizerNodeStats stats;  // the input's part is copied in when asked
   std::vector<slam::LocalizedScan> scans;
-  Transport::WriterId map_writer = 0, tf_writer = 0, pose_writer = 0;
+  PoseOutputs outputs;
 
   State(slam::ProbabilityGrid map, const LocalizerNodeOptions& o, Transport& t,
-        std::unique_ptr<ScanInput> in)
-      : options(o), transport(t), input(std::move(in)), localizer(std::move(map), o.localizer) {
+        std::unique_ptr<ScanInput> in, PoseOutputs out)
+      : options(o),
+        transport(t),
+        input(std::move(in)),
+        localizer(std::move(map), o.localizer),
+        outputs(std::move(out)) {
     if (o.initial_pose) localizer.set_pose(*o.initial_pose);
-  }
-
-  Status connect(const OccupancyGrid& picture) {
-    const std::string map_topic = *net::resolve_topic_name("map", options.ns);
-    const std::string pose_topic = *net::resolve_topic_name("pose", options.ns);
-    for (Status st :
-         {transport.advertise({map_topic, std::string(kRos2OccupancyGrid), Qos::map()}, map_writer),
-          transport.advertise({"/tf", std::string(kRos2TfMessage), Qos::tf()}, tf_writer),
-          transport.advertise(
-              {pose_topic, std::string(kRos2PoseWithCovarianceStamped), Qos::reliable(10)},
-              pose_writer)}) {
-      if (!st.ok()) return st;
-    }
-    // Transient local: published once, kept for every reader that joins later.
-    return transport.publish(map_writer,
-                             encode_cdr(occupancy_grid_message(picture, 0, options.map_frame)));
   }
 
   // Localizes the next scan whose odometry is known (all that wait, with `flush`); false when
@@ -69,23 +54,12 @@ struct LocalizerNode::State {
       return true;
     }
     ++stats.scans_localized;
-    if (Status p = publish_pose(ready->stamp_ns, s, ready->scan.odometry); !p.ok()) {
+    if (Status p = outputs.publish_pose(ready->stamp_ns, s.T_map_robot, ready->scan.odometry,
+                                        input->odom_frame(), ros_covariance(s.covariance));
+        !p.ok()) {
       return p.error();
     }
     return true;
-  }
-
-  Status publish_pose(std::int64_t stamp_ns, const slam::LocalizedScan& s,
-                      const Pose2& T_odom_base) {
-    PoseWithCovarianceStampedMessage pose;
-    pose.header = {stamp_ns, options.map_frame};
-    pose.pose = planar_transform(s.T_map_robot.x, s.T_map_robot.y, s.T_map_robot.theta);
-    pose.covariance = ros_covariance(s.covariance);
-    if (Status st = transport.publish(pose_writer, encode_cdr(pose)); !st.ok()) return st;
-    TfMessage map_to_odom;
-    map_to_odom.transforms.push_back(planar_transform_stamped(
-        s.T_map_robot * T_odom_base.inverse(), stamp_ns, options.map_frame, input->odom_frame()));
-    return transport.publish(tf_writer, encode_cdr(map_to_odom));
   }
 };
 
@@ -103,9 +77,12 @@ Result<std::unique_ptr<LocalizerNode>> LocalizerNode::create(slam::ProbabilityGr
   Result<std::unique_ptr<ScanInput>> input =
       ScanInput::create(options.ns, options.queue_depth, transport);
   if (!input.ok()) return input.error();
-  auto state =
-      std::make_unique<State>(std::move(map), options, transport, std::move(input).value());
-  if (Status s = state->connect(picture); !s.ok()) return s.error();
+  Result<PoseOutputs> outputs = PoseOutputs::advertise(transport, options.ns, options.map_frame);
+  if (!outputs.ok()) return outputs.error();
+  // Transient local: published once, kept for every reader that joins later.
+  if (Status s = outputs->publish_map(picture, 0); !s.ok()) return s.error();
+  auto state = std::make_unique<State>(std::move(map), options, transport, std::move(input).value(),
+                                       std::move(outputs).value());
   return std::unique_ptr<LocalizerNode>(new LocalizerNode(std::move(state)));
 }
 

@@ -5,14 +5,12 @@
 #include <chrono>
 #include <vector>
 
-#include "tessera/io/ros_message_encoders.hpp"
-#include "tessera/net/ros_names.hpp"
+#include "tessera/nodes/pose_outputs.hpp"
 #include "tessera/record/ros_conversions.hpp"
 
 namespace tessera::nodes {
 namespace {
 
-using net::Qos;
 using net::Transport;
 using SteadyClock = std::chrono::steady_clock;
 
@@ -26,7 +24,7 @@ struct SlamNode::State {
   std::unique_ptr<ScanInput> input;
   slam::LaserSlam slam;
   mutable SlamNodeStats stats;  // the input's part is copied in when asked
-  Transport::WriterId map_writer = 0, tf_writer = 0, pose_writer = 0;
+  PoseOutputs outputs;
   SteadyClock::time_point last_map{};
   std::int64_t last_map_stamp_ns = 0;
   bool started = false;
@@ -39,22 +37,8 @@ struct SlamNode::State {
   std::vector<double> map_latencies_s;
   Pose2 T_map_odom;
 
-  State(const SlamNodeOptions& o, Transport& t, std::unique_ptr<ScanInput> in)
-      : options(o), transport(t), input(std::move(in)), slam(o.slam) {}
-
-  Status connect() {
-    const std::string map_topic = *net::resolve_topic_name("map", options.ns);
-    const std::string pose_topic = *net::resolve_topic_name("pose", options.ns);
-    for (Status st :
-         {transport.advertise({map_topic, std::string(kRos2OccupancyGrid), Qos::map()}, map_writer),
-          transport.advertise({"/tf", std::string(kRos2TfMessage), Qos::tf()}, tf_writer),
-          transport.advertise(
-              {pose_topic, std::string(kRos2PoseWithCovarianceStamped), Qos::reliable(10)},
-              pose_writer)}) {
-      if (!st.ok()) return st;
-    }
-    return Ok{};
-  }
+  State(const SlamNodeOptions& o, Transport& t, std::unique_ptr<ScanInput> in, PoseOutputs out)
+      : options(o), transport(t), input(std::move(in)), slam(o.slam), outputs(std::move(out)) {}
 
   // Adds the next scan whose odometry is known (all that wait, with `flush`); false when none.
   Result<bool> add_next(bool flush) {
@@ -65,21 +49,14 @@ struct SlamNode::State {
     last_added_stamp_ns = ready->stamp_ns;
     started = true;
     unmapped.push_back(ready->received);
-    if (Status p = publish_pose(ready->stamp_ns, ready->scan.odometry); !p.ok()) return p.error();
-    return true;
-  }
-
-  Status publish_pose(std::int64_t stamp_ns, const Pose2& T_odom_base) {
     const Pose2 T_map_base = slam.latest_pose();
-    PoseWithCovarianceStampedMessage pose;
-    pose.header = {stamp_ns, options.map_frame};
-    pose.pose = planar_transform(T_map_base.x, T_map_base.y, T_map_base.theta);
-    if (Status s = transport.publish(pose_writer, encode_cdr(pose)); !s.ok()) return s;
-    T_map_odom = T_map_base * T_odom_base.inverse();
-    TfMessage map_to_odom;
-    map_to_odom.transforms.push_back(
-        planar_transform_stamped(T_map_odom, stamp_ns, options.map_frame, input->odom_frame()));
-    return transport.publish(tf_writer, encode_cdr(map_to_odom));
+    T_map_odom = T_map_base * ready->scan.odometry.inverse();
+    if (Status p = outputs.publish_pose(ready->stamp_ns, T_map_base, ready->scan.odometry,
+                                        input->odom_frame());
+        !p.ok()) {
+      return p.error();
+    }
+    return true;
   }
 
   Status publish_map(std::int64_t stamp_ns, OccupancyGrid map) {
@@ -93,8 +70,7 @@ struct SlamNode::State {
     last_map_stamp_ns = stamp_ns;
     ++stats.maps_published;
     last_map_grid = std::move(map);
-    return transport.publish(map_writer, encode_cdr(occupancy_grid_message(*last_map_grid, stamp_ns,
-                                                                           options.map_frame)));
+    return outputs.publish_map(*last_map_grid, stamp_ns);
   }
 
   [[nodiscard]] bool map_due(std::int64_t stamp_ns) const {
@@ -122,8 +98,10 @@ Result<std::unique_ptr<SlamNode>> SlamNode::create(const SlamNodeOptions& option
   Result<std::unique_ptr<ScanInput>> input =
       ScanInput::create(options.ns, options.queue_depth, transport);
   if (!input.ok()) return input.error();
-  auto state = std::make_unique<State>(options, transport, std::move(input).value());
-  if (Status s = state->connect(); !s.ok()) return s.error();
+  Result<PoseOutputs> outputs = PoseOutputs::advertise(transport, options.ns, options.map_frame);
+  if (!outputs.ok()) return outputs.error();
+  auto state = std::make_unique<State>(options, transport, std::move(input).value(),
+                                       std::move(outputs).value());
   return std::unique_ptr<SlamNode>(new SlamNode(std::move(state)));
 }
 

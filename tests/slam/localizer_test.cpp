@@ -29,18 +29,20 @@ SimulatedLaserRun office_run(std::uint64_t seed, double duration_s) {
   return std::move(r).value();
 }
 
-/// The office mapped by a first robot: its scans at its true poses (a perfect session).
+/// A run's scans at its true poses (a perfect session's map), at 0.05 m.
+ProbabilityGrid map_at_truth(const SimulatedLaserRun& run) {
+  std::vector<const StampedScan*> scans;
+  std::vector<Pose2> poses;
+  for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
+    scans.push_back(&run.log.scans[i]);
+    poses.push_back(run.truth[i].pose);
+  }
+  return frozen_map(scans, poses, LocalizerOptions{}.points, RangeInsertOptions{}, 0.05);
+}
+
+/// The office mapped by a first robot.
 const ProbabilityGrid& office_map() {
-  static const ProbabilityGrid map = [] {
-    const SimulatedLaserRun run = office_run(3, 0.0);
-    std::vector<const StampedScan*> scans;
-    std::vector<Pose2> poses;
-    for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
-      scans.push_back(&run.log.scans[i]);
-      poses.push_back(run.truth[i].pose);
-    }
-    return frozen_map(scans, poses, LocalizerOptions{}.points, RangeInsertOptions{}, 0.05);
-  }();
+  static const ProbabilityGrid map = map_at_truth(office_run(3, 0.0));
   return map;
 }
 
@@ -140,14 +142,8 @@ TEST(Localizer, ASymmetricRoomIsNeverClaimed) {
   o.max_duration_s = 20.0;
   Result<SimulatedLaserRun> run = simulate_laser_run(room, o, 5);
   ASSERT_TRUE(run.ok()) << run.error().message;
-  std::vector<const StampedScan*> scans;
-  std::vector<Pose2> poses;
-  for (std::size_t i = 0; i < run->log.scans.size(); ++i) {
-    scans.push_back(&run->log.scans[i]);
-    poses.push_back(run->truth[i].pose);
-  }
   const LocalizerOptions options;
-  Localizer localizer(frozen_map(scans, poses, options.points, {}, 0.05), options);
+  Localizer localizer(map_at_truth(*run), options);
   for (const StampedScan& scan : run->log.scans) {
     EXPECT_EQ(localizer.add_scan(scan).state, LocalizationState::kLost);
   }
@@ -171,14 +167,8 @@ TEST(Localizer, AViewThatSeesThroughTheMapsWallsIsRefused) {
   o.max_duration_s = 10.0;
   Result<SimulatedLaserRun> run = simulate_laser_run(room, o, 7);
   ASSERT_TRUE(run.ok()) << run.error().message;
-  std::vector<const StampedScan*> scans;
-  std::vector<Pose2> poses;
-  for (std::size_t i = 0; i < run->log.scans.size(); ++i) {
-    scans.push_back(&run->log.scans[i]);
-    poses.push_back(run->truth[i].pose);
-  }
   LocalizerOptions options;
-  ProbabilityGrid map = frozen_map(scans, poses, options.points, {}, 0.05);
+  ProbabilityGrid map = map_at_truth(*run);
   const GridGeometry& g = map.geometry();
   int blocked = 0;
   for (double y = 1.2; y < 2.7; y += 0.025) {

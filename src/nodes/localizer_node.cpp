@@ -54,6 +54,8 @@ struct LocalizerNode::State {
       return true;
     }
     ++stats.scans_localized;
+    if (!s.confident) return true;
+    ++stats.poses_published;
     if (Status p = outputs.publish_pose(ready->stamp_ns, s.T_map_robot, ready->scan.odometry,
                                         input->odom_frame(), ros_covariance(s.covariance));
         !p.ok()) {

@@ -6,10 +6,10 @@
 //   publishes  <ns>/map nav_msgs/OccupancyGrid once, the frozen map (reliable, transient local: a
 //              late planner or viewer gets it);
 //              <ns>/pose geometry_msgs/PoseWithCovarianceStamped (T_map_base and its covariance)
-//              for every scan that has a pose, and /tf map -> odom (REP-105) with it. A scan with
-//              no pose (not yet found, or lost) publishes nothing: a robot that is lost is not
-//              told a guess. Whether a pose is confident shows in its covariance (a pose found by
-//              global search and not yet confirmed carries the search's coarse uncertainty).
+//              and /tf map -> odom (REP-105) for every scan whose pose is confident. A robot that
+//              is not found yet, lost, or whose scans have just stopped fitting the map (not
+//              confident) publishes nothing: a planner is never handed a guess.
+// The node keeps every scan's result for the run's outputs (about 150 bytes a scan).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -36,8 +36,9 @@ struct LocalizerNodeOptions {
 
 /// What came in (ScanInputStats) and what became of it.
 struct LocalizerNodeStats : ScanInputStats {
-  std::uint64_t scans_localized = 0;  // scans that got a pose (published)
+  std::uint64_t scans_localized = 0;  // scans that got a pose
   std::uint64_t scans_lost = 0;       // scans taken with no pose
+  std::uint64_t poses_published = 0;  // the confident ones
 };
 
 class LocalizerNode {
@@ -53,8 +54,8 @@ class LocalizerNode {
   LocalizerNode& operator=(const LocalizerNode&) = delete;
 
   /// Delivers what has arrived and localizes every scan whose odometry is known, publishing its
-  /// pose and map -> odom. Returns how many scans it took; kRuntime error when a publication
-  /// fails.
+  /// pose and map -> odom when confident. Returns how many scans it took; kRuntime error when a
+  /// publication fails.
   [[nodiscard]] Result<int> spin_once();
   /// Takes the scans still waiting (odometry clamped to the last message). Call once, at the end.
   [[nodiscard]] Status finish();

@@ -86,7 +86,9 @@ GridmatchCommand::GridmatchCommand(CLI::App& app) {
       "candidates/*.svg, similarity.md and report.json to --out");
   world_.builtin = kLectureWorld;
   add_world_options(*sub_, world_);
-  sub_->add_option("--resolution-m", cell_m_, "Cell size (built-in worlds are drawn at it)")
+  sub_->add_option("--resolution-m", cell_m_,
+                   "Cell size, about the robot's (the lecture's 0.3 m); a floor plan is resampled "
+                   "to it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   sub_->add_option("--before", before_,
@@ -112,7 +114,12 @@ int GridmatchCommand::run() const {
   }
   Result<World> world = load_world(world_, cell_m_);
   if (!world) return report_error(world.error());
-  const double cell_m = world->geometry().resolution_m();
+  // The lecture's cells are about the robot's size: a floor plan is resampled to them (a coarse
+  // cell is solid when any of its fine cells is).
+  if (std::abs(world->geometry().resolution_m() - cell_m_) > 1e-9) {
+    world = world->resampled(cell_m_);
+  }
+  const double cell_m = cell_m_;
   Pose2 before{3.5 * kLectureCellM, 3.5 * kLectureCellM, 0.5 * std::numbers::pi};
   if (before_) {
     Result<Pose2> p = parse_pose(*before_, "--before");

@@ -63,6 +63,29 @@ TEST(CliGridmatch, AnotherPoseErrorIsCorrectedToo) {
   EXPECT_THAT(read_bytes(dir.path() / "similarity.md"), Not(HasSubstr("lecture")));
 }
 
+TEST(CliGridmatch, AFloorPlanIsResampledToRobotSizedCells) {
+  // A 6 x 4.5 m room drawn at 0.1 m (a map_server file), matched in 0.3 m cells.
+  const TempDir dir;
+  std::string pgm = "P5\n60 45\n255\n";
+  for (int y = 0; y < 45; ++y) {
+    for (int x = 0; x < 60; ++x) {
+      const bool wall = x < 3 || y < 3 || y >= 42 || (x >= 3 && x < 6 && y >= 15 && y < 21);
+      pgm += static_cast<char>(wall ? 0 : 254);
+    }
+  }
+  support::write_bytes(dir.path() / "room.pgm", pgm);
+  support::write_bytes(dir.path() / "room.yaml",
+                       "image: room.pgm\nresolution: 0.1\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n"
+                       "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const auto r = run_cli("gridmatch --world " + (dir.path() / "room.yaml").string() +
+                         " --before 1.05,3.45,1.5707963 --out " + (dir.path() / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("chosen: intended position, 15 deg CW"));
+  const nlohmann::json report =
+      nlohmann::json::parse(read_bytes(dir.path() / "out" / "report.json"));
+  EXPECT_DOUBLE_EQ(report["options"]["resolution_m"].get<double>(), 0.3);
+}
+
 TEST(CliGridmatch, BadPosesAndWorldsWithoutAPoseAreUsageErrors) {
   const TempDir dir;
   const auto out = (dir.path() / "out").string();

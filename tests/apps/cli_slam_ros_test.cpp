@@ -64,6 +64,15 @@ TEST(CliSlamRos, BadCombinationsAndLogsAreErrors) {
       support::run_cli("play " + (dir.path() / "bad.clf").string() + " --scan-topic /scan");
   EXPECT_EQ(topic.exit_code, 2);
   EXPECT_THAT(topic.output, HasSubstr("choose a bag's topics"));
+  const std::string intel = support::data_path("laser/intel/intel-raw-first5505-sot.clf").string();
+  const auto backwards = support::run_cli("play " + intel + " --from-s 50 --to-s 40");
+  EXPECT_EQ(backwards.exit_code, 2);
+  EXPECT_THAT(backwards.output, HasSubstr("--from-s 50 must be before --to-s 40"));
+  if (std::filesystem::exists(intel)) {
+    const auto empty = support::run_cli("play " + intel + " --from-s 5000");
+    EXPECT_EQ(empty.exit_code, 3);
+    EXPECT_THAT(empty.output, HasSubstr("no scan from 5000 s"));
+  }
   const auto nobody = support::run_cli(
       "play " + support::data_path("laser/intel/intel-raw-first5505-sot.clf").string() +
       " --wait-s 0.2 --domain " + std::to_string(support::test_dds_domain()));

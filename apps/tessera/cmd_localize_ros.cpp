@@ -88,7 +88,7 @@ int LocalizeCommand::run_ros() const {
   nlohmann::json ros = scan_input_json(st);
   ros["scans_localized"] = st.scans_localized;
   ros["scans_lost"] = st.scans_lost;
-  ros["poses_published"] = st.poses_published;
+  ros["poses_unsure"] = st.poses_unsure;
   const nlohmann::json options_json = {{"session", session_.string()},
                                        {"input", "ros"},
                                        {"ns", ns_},

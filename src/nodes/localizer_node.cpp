@@ -54,10 +54,15 @@ struct LocalizerNode::State {
       return true;
     }
     ++stats.scans_localized;
-    if (!s.confident) return true;
-    ++stats.poses_published;
+    Eigen::Matrix3d covariance = s.covariance;
+    if (!s.confident) {
+      ++stats.poses_unsure;
+      covariance += Eigen::Vector3d(options.unsure_variance_m2, options.unsure_variance_m2,
+                                    options.unsure_variance_rad2)
+                        .asDiagonal();
+    }
     if (Status p = outputs.publish_pose(ready->stamp_ns, s.T_map_robot, ready->scan.odometry,
-                                        input->odom_frame(), ros_covariance(s.covariance));
+                                        input->odom_frame(), ros_covariance(covariance));
         !p.ok()) {
       return p.error();
     }
@@ -75,7 +80,10 @@ Result<std::unique_ptr<LocalizerNode>> LocalizerNode::create(slam::ProbabilityGr
   if (auto problem = slam::validate(options.localizer)) {
     return usage_error("localizer node: " + *problem);
   }
-  if (options.queue_depth == 0) return usage_error("localizer node: queue_depth must be > 0");
+  if (options.queue_depth == 0 || !(options.unsure_variance_m2 >= 0.0) ||
+      !(options.unsure_variance_rad2 >= 0.0)) {
+    return usage_error("localizer node: queue_depth must be > 0, unsure_variance_* >= 0");
+  }
   Result<std::unique_ptr<ScanInput>> input =
       ScanInput::create(options.ns, options.queue_depth, transport);
   if (!input.ok()) return input.error();

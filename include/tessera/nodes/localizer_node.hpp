@@ -6,9 +6,12 @@
 //   publishes  <ns>/map nav_msgs/OccupancyGrid once, the frozen map (reliable, transient local: a
 //              late planner or viewer gets it);
 //              <ns>/pose geometry_msgs/PoseWithCovarianceStamped (T_map_base and its covariance)
-//              and /tf map -> odom (REP-105) for every scan whose pose is confident. A robot that
-//              is not found yet, lost, or whose scans have just stopped fitting the map (not
-//              confident) publishes nothing: a planner is never handed a guess.
+//              and /tf map -> odom (REP-105) for every scan that has a pose. A pose that is not
+//              confident (its scans have just stopped fitting the map, or it is tracked on little
+//              of the map, beyond where the session went) carries unsure_variance on top of the
+//              refinement's covariance, so that a consumer weighing by covariance (a planner, an
+//              EKF) trusts it little. A robot not found yet, or lost, publishes nothing: a planner
+//              is never handed a guess.
 // The node keeps every scan's result for the run's outputs (about 150 bytes a scan).
 #include <cstdint>
 #include <memory>
@@ -30,6 +33,10 @@ struct LocalizerNodeOptions {
   /// Scans waiting for odometry or for the localizer: beyond this, the oldest is dropped.
   std::uint32_t queue_depth = 2000;
   slam::LocalizerOptions localizer{};
+  /// Added to the covariance of a pose that is not confident: (0.5 m)^2 on x and y, (0.2 rad)^2
+  /// on the heading.
+  double unsure_variance_m2 = 0.25;
+  double unsure_variance_rad2 = 0.04;
   /// T_map_robot of the first scan; nullopt: found by global relocalization.
   std::optional<Pose2> initial_pose{};
 };
@@ -38,7 +45,7 @@ struct LocalizerNodeOptions {
 struct LocalizerNodeStats : ScanInputStats {
   std::uint64_t scans_localized = 0;  // scans that got a pose
   std::uint64_t scans_lost = 0;       // scans taken with no pose
-  std::uint64_t poses_published = 0;  // the confident ones
+  std::uint64_t poses_unsure = 0;     // published with the added variance (not confident)
 };
 
 class LocalizerNode {
@@ -54,7 +61,7 @@ class LocalizerNode {
   LocalizerNode& operator=(const LocalizerNode&) = delete;
 
   /// Delivers what has arrived and localizes every scan whose odometry is known, publishing its
-  /// pose and map -> odom when confident. Returns how many scans it took; kRuntime error when a
+  /// pose and map -> odom. Returns how many scans it took; kRuntime error when a
   /// publication fails.
   [[nodiscard]] Result<int> spin_once();
   /// Takes the scans still waiting (odometry clamped to the last message). Call once, at the end.

@@ -74,40 +74,23 @@ int LocalizeCommand::run() const {
   if (ros_) return run_ros();
   if (!input_.given()) return report_error(usage_error("localize needs --log, --bag or --ros"));
   if (Status s = input_.check(); !s) return report_error(s.error());
-  if (!std::isfinite(time_offset_s_)) {
-    return report_error(usage_error("--time-offset must be a finite number of seconds"));
-  }
-  std::optional<Pose2> initial;
-  if (initial_pose_) {
-    Result<Pose2> p = parse_pose(*initial_pose_, "--initial-pose");
-    if (!p) return report_error(p.error());
-    initial = *p;
-  }
-  // Inputs first: a bad session, log or relations file leaves nothing behind.
-  Result<Session> session = read_session(session_);
-  if (!session) return report_error(session.error());
+  // Inputs first: a bad session, relations file or log leaves nothing behind.
+  Result<Setup> setup = read_setup();
+  if (!setup) return report_error(setup.error());
+  const Session& session = setup->session;
   Result<LaserLog> log = input_.read(nullptr);
   if (!log) return report_error(log.error());
-  if (session->scans.empty()) {
-    return report_error(input_error(session_.string() + ": the session holds no scans"));
-  }
-  if (Status s = check_same_laser(*session, *log, session_.string(), input_.name()); !s) {
+  if (Status s = check_same_laser(session, *log, session_.string(), input_.name()); !s) {
     return report_error(s.error());
-  }
-  std::optional<std::vector<Relation>> relations;
-  if (relations_) {
-    Result<std::vector<Relation>> read = read_relations(*relations_);
-    if (!read) return report_error(read.error());
-    relations = std::move(read).value();
   }
 
   // The frozen map: the session's nodes at their optimised poses, as the SLAM built its submaps.
   const auto t0 = std::chrono::steady_clock::now();
   const slam::LocalizerOptions options;
-  Result<slam::ProbabilityGrid> map = session_frozen_map(*session, options, session_.string());
+  Result<slam::ProbabilityGrid> map = session_frozen_map(session, options, session_.string());
   if (!map) return report_error(map.error());
   slam::Localizer localizer(std::move(map).value(), options);
-  if (initial) localizer.set_pose(*initial);
+  if (setup->initial_pose) localizer.set_pose(*setup->initial_pose);
 
   ProgressLine progress(!quiet_ && stderr_is_terminal());
   std::vector<slam::LocalizedScan> scans;
@@ -122,20 +105,44 @@ int LocalizeCommand::run() const {
     }
   }
   progress.finish();
-  const nlohmann::json options_json = {{"session", session_.string()},
-                                       {"input", input_.name()},
-                                       {"initial_pose", initial_pose_.value_or("")},
-                                       {"time_offset_s", time_offset_s_}};
-  return write_outputs(scans, localizer, options_json, seconds_since(t0), data_duration_s(*log),
-                       relations, nullptr);
+  return write_outputs(scans, localizer, input_.name(), seconds_since(t0), data_duration_s(*log),
+                       setup->relations, nullptr);
+}
+
+Result<LocalizeCommand::Setup> LocalizeCommand::read_setup() const {
+  if (!std::isfinite(time_offset_s_)) {
+    return usage_error("--time-offset must be a finite number of seconds");
+  }
+  Setup setup;
+  if (initial_pose_) {
+    Result<Pose2> p = parse_pose(*initial_pose_, "--initial-pose");
+    if (!p) return p.error();
+    setup.initial_pose = *p;
+  }
+  Result<Session> session = read_session(session_);
+  if (!session) return session.error();
+  if (session->scans.empty()) {
+    return input_error(session_.string() + ": the session holds no scans");
+  }
+  setup.session = std::move(session).value();
+  if (relations_) {
+    Result<std::vector<Relation>> read = read_relations(*relations_);
+    if (!read) return read.error();
+    setup.relations = std::move(read).value();
+  }
+  return setup;
 }
 
 int LocalizeCommand::write_outputs(const std::vector<slam::LocalizedScan>& scans,
-                                   const slam::Localizer& localizer,
-                                   const nlohmann::json& options_json, double wall_s,
-                                   double duration_s,
+                                   const slam::Localizer& localizer, const std::string& input,
+                                   double wall_s, double duration_s,
                                    const std::optional<std::vector<Relation>>& relations,
                                    const nlohmann::json* ros) const {
+  nlohmann::json options_json = {{"session", session_.string()},
+                                 {"input", input},
+                                 {"initial_pose", initial_pose_.value_or("")},
+                                 {"time_offset_s", time_offset_s_}};
+  if (ros) options_json["ns"] = ns_;
   std::optional<double> first_pose_after_s;
   std::vector<StampedPose2> trajectory;
   for (const slam::LocalizedScan& s : scans) {

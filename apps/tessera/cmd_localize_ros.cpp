@@ -10,8 +10,6 @@
 #include "commands.hpp"
 #include "dds_options.hpp"
 #include "session_map.hpp"
-#include "tessera/io/relations_file.hpp"
-#include "tessera/io/session_file.hpp"
 #include "tessera/nodes/localizer_node.hpp"
 
 namespace tessera::cli {
@@ -34,45 +32,25 @@ int LocalizeCommand::run_ros() const {
     return report_error(usage_error("--ros localizes the topics: give no --log or --bag"));
   }
   if (Status s = input_.check(); !s) return report_error(s.error());  // --from-s without input
-  if (!std::isfinite(time_offset_s_)) {
-    return report_error(usage_error("--time-offset must be a finite number of seconds"));
-  }
+  Result<Setup> setup = read_setup();
+  if (!setup) return report_error(setup.error());
   nodes::LocalizerNodeOptions options;
   options.ns = ns_;
-  if (initial_pose_) {
-    Result<Pose2> p = parse_pose(*initial_pose_, "--initial-pose");
-    if (!p) return report_error(p.error());
-    options.initial_pose = *p;
-  }
-  Result<Session> session = read_session(session_);
-  if (!session) return report_error(session.error());
-  if (session->scans.empty()) {
-    return report_error(input_error(session_.string() + ": the session holds no scans"));
-  }
-  std::optional<std::vector<Relation>> relations;
-  if (relations_) {
-    Result<std::vector<Relation>> read = read_relations(*relations_);
-    if (!read) return report_error(read.error());
-    relations = std::move(read).value();
-  }
+  options.initial_pose = setup->initial_pose;
   Result<slam::ProbabilityGrid> map =
-      session_frozen_map(*session, options.localizer, session_.string());
+      session_frozen_map(setup->session, options.localizer, session_.string());
   if (!map) return report_error(map.error());
 
   Result<std::unique_ptr<net::Transport>> transport = open_dds(domain_, network_);
   if (!transport.ok()) return report_error(transport.error());
-  Result<std::unique_ptr<nodes::LocalizerNode>> node =
-      nodes::LocalizerNode::create(std::move(map).value(), session->map, options, **transport);
+  Result<std::unique_ptr<nodes::LocalizerNode>> node = nodes::LocalizerNode::create(
+      std::move(map).value(), setup->session.map, options, **transport);
   if (!node.ok()) return report_error(node.error());
 
   const auto t0 = std::chrono::steady_clock::now();
   nodes::LocalizerNode& live = **node;
   const Status ran = run_live_node(
-      **transport, idle_exit_s_, !quiet_ && stderr_is_terminal(),
-      [&]() -> Status {
-        if (Result<int> taken = live.spin_once(); !taken.ok()) return taken.error();
-        return Ok{};
-      },
+      **transport, idle_exit_s_, !quiet_ && stderr_is_terminal(), [&] { return live.spin_once(); },
       [&] { return live.stats().scans_received; },
       [&] {
         return fmt::format("localize --ros: {} scans received, {} localized",
@@ -89,13 +67,8 @@ int LocalizeCommand::run_ros() const {
   ros["scans_localized"] = st.scans_localized;
   ros["scans_lost"] = st.scans_lost;
   ros["poses_unsure"] = st.poses_unsure;
-  const nlohmann::json options_json = {{"session", session_.string()},
-                                       {"input", "ros"},
-                                       {"ns", ns_},
-                                       {"initial_pose", initial_pose_.value_or("")},
-                                       {"time_offset_s", time_offset_s_}};
-  return write_outputs(scans, (*node)->localizer(), options_json, seconds_since(t0),
-                       scans.back().t_s - scans.front().t_s, relations, &ros);
+  return write_outputs(scans, (*node)->localizer(), "ros", seconds_since(t0),
+                       scans.back().t_s - scans.front().t_s, setup->relations, &ros);
 }
 
 }  // namespace tessera::cli

@@ -62,11 +62,7 @@ int SlamCommand::run_ros() const {
   const auto t0 = std::chrono::steady_clock::now();
   nodes::SlamNode& live = **node;
   const Status ran = run_live_node(
-      **transport, idle_exit_s_, !quiet_ && stderr_is_terminal(),
-      [&]() -> Status {
-        if (Result<int> added = live.spin_once(); !added.ok()) return added.error();
-        return Ok{};
-      },
+      **transport, idle_exit_s_, !quiet_ && stderr_is_terminal(), [&] { return live.spin_once(); },
       [&] { return live.stats().scans_received; },
       [&] {
         return fmt::format("slam --ros: {} scans received, {} mapped", live.stats().scans_received,

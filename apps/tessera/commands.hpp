@@ -15,6 +15,7 @@
 #include "slam_live.hpp"
 #include "tessera/core/relation.hpp"
 #include "tessera/eval/trajectory_error.hpp"
+#include "tessera/io/session_file.hpp"
 #include "tessera/mission/bob_mission.hpp"
 #include "tessera/mission/exploration_mission.hpp"
 #include "tessera/sensors/laser_log.hpp"
@@ -284,12 +285,20 @@ class LocalizeCommand : public Command {
   std::uint32_t domain_ = 0;
   bool network_ = false;
   double idle_exit_s_ = 0.0;
+  /// What both modes read before they localize: --time-offset checked, --initial-pose parsed,
+  /// the session (holding scans) and the relations file.
+  struct Setup {
+    Session session;
+    std::optional<Pose2> initial_pose;
+    std::optional<std::vector<Relation>> relations;
+  };
+  [[nodiscard]] Result<Setup> read_setup() const;
   /// Scores, reports and writes a run's outputs (poses.csv, trajectory.txt, localization.png,
-  /// report.json with `ros`'s counts when given) and prints its summary; the exit code.
+  /// report.json with `ros`'s counts when given) and prints its summary; the exit code. `input`
+  /// names where the scans came from.
   [[nodiscard]] int write_outputs(const std::vector<slam::LocalizedScan>& scans,
-                                  const slam::Localizer& localizer,
-                                  const nlohmann::json& options_json, double wall_s,
-                                  double duration_s,
+                                  const slam::Localizer& localizer, const std::string& input,
+                                  double wall_s, double duration_s,
                                   const std::optional<std::vector<Relation>>& relations,
                                   const nlohmann::json* ros) const;
 };

@@ -26,7 +26,7 @@ Result<std::unique_ptr<net::Transport>> open_dds(std::uint32_t domain, bool netw
 }
 
 Status run_live_node(net::Transport& transport, double idle_exit_s, bool show_progress,
-                     const std::function<Status()>& spin,
+                     const std::function<Result<int>()>& spin,
                      const std::function<std::uint64_t()>& scans_received,
                      const std::function<std::string()>& progress_text) {
   const StopSignals stop;
@@ -35,7 +35,7 @@ Status run_live_node(net::Transport& transport, double idle_exit_s, bool show_pr
   std::uint64_t received = 0;
   while (!StopSignals::requested()) {
     transport.wait(0.05);
-    if (Status s = spin(); !s.ok()) return s;
+    if (Result<int> spun = spin(); !spun.ok()) return spun.error();
     if (scans_received() != received) {
       received = scans_received();
       last_scan = std::chrono::steady_clock::now();

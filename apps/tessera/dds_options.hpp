@@ -22,10 +22,11 @@ void add_dds_options(CLI::App& command, std::uint32_t& domain, bool& network);
 [[nodiscard]] Result<std::unique_ptr<net::Transport>> open_dds(std::uint32_t domain, bool network);
 
 /// Drives a live node until Ctrl-C, SIGTERM or, with idle_exit_s > 0, that long without a new
-/// scan after the first: waits on the transport, calls `spin` (its error ends the loop), and shows
+/// scan after the first: waits on the transport, calls `spin` (a node's spin_once; its error ends
+/// the loop), and shows
 /// `progress_text()` on the terminal (when `show_progress`) whenever `scans_received()` changes.
 [[nodiscard]] Status run_live_node(net::Transport& transport, double idle_exit_s,
-                                   bool show_progress, const std::function<Status()>& spin,
+                                   bool show_progress, const std::function<Result<int>()>& spin,
                                    const std::function<std::uint64_t()>& scans_received,
                                    const std::function<std::string()>& progress_text);
 

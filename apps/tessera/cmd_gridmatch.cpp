@@ -6,6 +6,7 @@
 // clockwise.
 #include <fmt/format.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -33,8 +34,6 @@ constexpr int kLectureTable[5][3] = {
 constexpr slam::CandidateOffset kLectureRows[5] = {
     {0, 0, 0}, {0, 1, 0}, {0, -1, 0}, {-1, 0, 0}, {1, 0, 0}};
 constexpr int kLectureColumns[3] = {0, -1, 1};
-constexpr const char* kRowNames[5] = {"Intended position", "Up one cell", "Down one cell",
-                                      "Left one cell", "Right one cell"};
 
 std::string offset_label(const slam::CandidateOffset& o, double heading_step_deg) {
   std::string where;
@@ -56,12 +55,14 @@ int score_of(const slam::GridMatchResult& r, const slam::CandidateOffset& o) {
   return 0;
 }
 
-// The S table in the lecture's layout, with the lecture's numbers beside ours when the step is the
-// lecture's example.
+// The S table in the lecture's layout (the command's test poses are always the lecture's 5 x 3),
+// with the lecture's numbers beside ours when the step is the lecture's example.
 std::string similarity_markdown(const slam::GridMatchResult& r, bool lecture) {
   std::string md = "| | Intended orientation | 15 deg CW | 15 deg CCW |\n|---|---|---|---|\n";
   for (int row = 0; row < 5; ++row) {
-    md += fmt::format("| {} |", kRowNames[row]);
+    std::string name = offset_label(kLectureRows[row], 0.0);
+    name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+    md += fmt::format("| {} |", name);
     for (int col = 0; col < 3; ++col) {
       slam::CandidateOffset o = kLectureRows[row];
       o.dheading_steps = kLectureColumns[col];
@@ -197,15 +198,14 @@ int GridmatchCommand::run() const {
                          {"chosen", step.labels[r.best]},
                          {"error_m", std::hypot(error.x, error.y)},
                          {"error_rad", std::abs(normalize_angle(error.theta))}};
-  const bool lecture_layout = r.candidates.size() == 15;
   if (lecture) report["gridmatch"]["lecture_table"] = kLectureTable;
 
   // The files' bytes first: PendingFile only views them.
+  const std::string table = similarity_markdown(r, lecture);
   std::vector<std::pair<std::filesystem::path, std::string>> contents{
       {out_ / "gridmatch.svg", gridmatch_sheet_svg(step)},
-      {out_ / "report.json", encode_json(report)}};
-  if (lecture_layout)
-    contents.emplace_back(out_ / "similarity.md", similarity_markdown(r, lecture));
+      {out_ / "report.json", encode_json(report)},
+      {out_ / "similarity.md", table}};
   for (std::size_t k = 0; k < r.candidates.size(); ++k) {
     const slam::CandidateOffset& o = r.candidates[k].offset;
     contents.emplace_back(out_ / "candidates" /
@@ -218,13 +218,12 @@ int GridmatchCommand::run() const {
   if (Status s = ensure_directory(out_ / "candidates"); !s) return report_error(s.error());
   if (Status s = write_files_atomic(files); !s) return report_error(s.error());
   if (!quiet_) {
-    if (lecture_layout) fmt::print("{}", similarity_markdown(r, lecture));
+    fmt::print("{}", table);
     fmt::print(
         "chosen: {} (S = {}, {} ahead of the next), {:.3f} m and {:.1f} deg from the actual "
-        "pose\noutputs: {}/gridmatch.svg candidates/ {}report.json\n",
+        "pose\noutputs: {}/gridmatch.svg candidates/ similarity.md report.json\n",
         step.labels[r.best], r.winner().similarity.score, r.margin, std::hypot(error.x, error.y),
-        rad_to_deg(std::abs(normalize_angle(error.theta))), out_.string(),
-        lecture_layout ? "similarity.md " : "");
+        rad_to_deg(std::abs(normalize_angle(error.theta))), out_.string());
   }
   return kExitOk;
 }

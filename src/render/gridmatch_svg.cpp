@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace tessera {
 namespace {
@@ -73,7 +74,7 @@ void window_panel(std::string& svg, double left, double top, const slam::Ternary
   const Cell at = geo.cell_at_unchecked({0.0, 0.0});
   if (geo.contains(at)) {
     robot(svg, left + (geo.height() - 0.5 - at.y) * kCellPx,
-          top + (geo.width() - 0.5 - at.x) * kCellPx, 0.5 * std::acos(-1.0), "#1f77b4");
+          top + (geo.width() - 0.5 - at.x) * kCellPx, 0.5 * std::numbers::pi, "#1f77b4");
   }
   if (framed) {
     svg += fmt::format(
@@ -113,7 +114,7 @@ std::string document(double width, double height, const std::string& body) {
 
 std::string pose_text(const Pose2& p) {
   return fmt::format("x {:.2f} m, y {:.2f} m, {:.0f} deg", p.x, p.y,
-                     p.theta * 180.0 / std::acos(-1.0));
+                     p.theta * 180.0 / std::numbers::pi);
 }
 
 std::string label_of(const GridMatchStep& step, std::size_t k) {

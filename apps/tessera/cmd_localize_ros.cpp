@@ -19,12 +19,7 @@ void LocalizeCommand::add_ros_options() {
                  "Live localization node on Cyclone DDS: subscribe <ns>/scan, <ns>/odom, /tf, "
                  "/tf_static; publish <ns>/map (the session's map, once), <ns>/pose with its "
                  "covariance and map -> odom on /tf for every scan that has a pose");
-  sub_->add_option("--ns", ns_, "--ros: namespace of the topics, e.g. /r1 (default: none)");
-  add_dds_options(*sub_, domain_, network_);
-  sub_->add_option("--idle-exit-s", idle_exit_s_,
-                   "--ros: finish when no scan has arrived for this long (0: run until stopped)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+  add_live_node_options(*sub_, ns_, domain_, network_, idle_exit_s_);
 }
 
 int LocalizeCommand::run_ros() const {

@@ -21,6 +21,17 @@ void add_dds_options(CLI::App& command, std::uint32_t& domain, bool& network) {
                    "127.0.0.1 only)");
 }
 
+void add_live_node_options(CLI::App& command, std::string& ns, std::uint32_t& domain, bool& network,
+                           double& idle_exit_s) {
+  command.add_option("--ns", ns, "--ros: namespace of the topics, e.g. /r1 (default: none)");
+  add_dds_options(command, domain, network);
+  command
+      .add_option("--idle-exit-s", idle_exit_s,
+                  "--ros: finish when no scan has arrived for this long (0: run until stopped)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+}
+
 Result<std::unique_ptr<net::Transport>> open_dds(std::uint32_t domain, bool network) {
   return net::make_dds_transport({.domain_id = domain, .loopback_only = !network});
 }

@@ -18,6 +18,10 @@ namespace tessera::cli {
 /// discovery, as ROS 2 does, instead of 127.0.0.1 only).
 void add_dds_options(CLI::App& command, std::uint32_t& domain, bool& network);
 
+/// A live node's options (slam --ros, localize --ros): --ns, the DDS options and --idle-exit-s.
+void add_live_node_options(CLI::App& command, std::string& ns, std::uint32_t& domain, bool& network,
+                           double& idle_exit_s);
+
 /// A DDS participant with those options.
 [[nodiscard]] Result<std::unique_ptr<net::Transport>> open_dds(std::uint32_t domain, bool network);
 

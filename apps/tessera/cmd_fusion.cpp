@@ -16,16 +16,15 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "recording.hpp"
-#include "tessera/report/core_report.hpp"
 #include "fusion_report.hpp"
+#include "recording.hpp"
 #include "tessera/core/rng.hpp"
 #include "tessera/fusion/feature_type.hpp"
-#include "tessera/fusion/image_node.hpp"
-#include "tessera/fusion/node_matcher.hpp"
+#include "tessera/fusion/frame_pair_match.hpp"
 #include "tessera/io/atomic_file.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/rgbd_pair_folder.hpp"
+#include "tessera/report/core_report.hpp"
 
 namespace tessera::cli {
 
@@ -39,6 +38,10 @@ FusionCommand::FusionCommand(CLI::App& app) {
                    "Frame pair folder (layout of ../shared/data/rgbd/tum_fr1_xyz_pairs/case_1)");
   sub_->add_option("--features", options_.features,
                    "Feature type: orb, sift or akaze (SURF is not in Debian's OpenCV)")
+      ->capture_default_str();
+  sub_->add_option("--pair-method", options_.pair_method,
+                   "--pair: auto (features, then the depth images alone when the colour images "
+                   "hold too few features), features, or depth-icp")
       ->capture_default_str();
   sub_->add_option("--out", options_.out, "Output folder")->capture_default_str();
   sub_->add_option("--seed", options_.seed, "Seed of the RANSAC sampling")->capture_default_str();
@@ -92,8 +95,9 @@ FusionCommand::Mode FusionCommand::mode() const {
 
 int FusionCommand::run() const {
   if ((options_.streams.record || options_.streams.serve_port) && mode() == Mode::kPair) {
-    return report_error(usage_error("--record and --serve take a run (--world, "
-                                    "--teach-and-repeat, --sequence), not a --pair"));
+    return report_error(
+        usage_error("--record and --serve take a run (--world, "
+                    "--teach-and-repeat, --sequence), not a --pair"));
   }
   switch (mode()) {
     case Mode::kPair:
@@ -115,29 +119,25 @@ int FusionCommand::run() const {
 int FusionCommand::run_pair() const {
   const Result<fusion::FeatureType> type = fusion::parse_feature_type(options_.features);
   if (!type) return report_error(type.error());
-  fusion::ImageNodeOptions node_options;
-  node_options.feature_type = *type;
-  const fusion::NodeMatcherOptions match_options;
+  const Result<fusion::PairMethod> method = fusion::parse_pair_method(options_.pair_method);
+  if (!method) return report_error(method.error());
+  fusion::FramePairOptions pair_options;
+  pair_options.method = *method;
+  pair_options.node.feature_type = *type;
 
   // Input first: a bad folder must leave nothing behind.
   const Result<RgbdPair> pair = read_rgbd_pair_folder(*options_.pair);
   if (!pair) return report_error(pair.error());
 
   const auto t0 = std::chrono::steady_clock::now();
-  const fusion::NodeCreation prev = fusion::create_image_node(pair->prev, {}, node_options);
-  const fusion::NodeCreation curr = fusion::create_image_node(pair->curr, {}, node_options);
-  std::optional<fusion::MatchResult> match;
-  if (prev.ok() && curr.ok()) {
-    Rng rng(options_.seed);
-    match = fusion::match_nodes(prev.node, curr.node, match_options, rng);
-  }
-  const PairReport outcome =
-      pair_report(*options_.pair, *pair, prev, curr, match ? &*match : nullptr);
+  Rng rng(options_.seed);
+  const fusion::FramePairMatch match =
+      fusion::match_frame_pair(pair->prev, pair->curr, pair_options, rng);
+  const PairReport outcome = pair_report(*options_.pair, *pair, match);
   const double wall_s = seconds_since(t0);
 
-  nlohmann::json report = {
-      {"options", pair_options_json(*options_.pair, *type, *pair, node_options, match_options)},
-      {"pair", outcome.pair}};
+  nlohmann::json report = {{"options", pair_options_json(*options_.pair, *pair, pair_options)},
+                           {"pair", outcome.pair}};
   // One frame pair has no data clock: data_duration_s is null.
   report.update(core_report({"fusion", options_.seed, report["options"], wall_s, std::nullopt}));
 

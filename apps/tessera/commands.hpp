@@ -316,6 +316,7 @@ class FusionCommand : public Command {
   struct Options {
     std::optional<std::filesystem::path> pair;  // --pair: a frame pair folder
     std::string features = "orb";               // parsed in run(): unknown names are exit 3
+    std::string pair_method = "auto";           // --pair: auto, features or depth-icp
     std::filesystem::path out = "out/fusion";
     std::uint64_t seed = 1;
     bool quiet = false;

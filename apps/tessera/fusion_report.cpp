@@ -4,6 +4,11 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <utility>
+
 #include "tessera/core/angle.hpp"
 #include "tessera/eval/drift_correction.hpp"
 #include "tessera/io/atomic_file.hpp"
@@ -186,70 +191,105 @@ nlohmann::json summary_json(const TeachAndRepeatSummary& s) {
           {"search_successes", s.search_successes}};
 }
 
+namespace {
+
+/// The feature path's keys of the "pair" block; returns its reason and summary.
+std::pair<std::string, std::string> feature_keys(const fusion::FramePairMatch& m,
+                                                 nlohmann::json& j) {
+  if (!m.prev->ok() || !m.curr->ok()) {
+    const bool prev_failed = !m.prev->ok();
+    const fusion::NodeCreation& failed = prev_failed ? *m.prev : *m.curr;
+    j["matches"] = 0;
+    j["inliers"] = 0;
+    return {std::string(prev_failed ? "previous" : "current") +
+                " frame: " + std::string(fusion::to_string(failed.check)),
+            failed.reason};
+  }
+  const fusion::MatchResult& f = *m.features;
+  j["matches"] = f.matches;
+  j["matches_3d"] = f.matches_3d;
+  j["inliers"] = f.inliers;
+  j["inlier_ratio"] = f.inlier_ratio;
+  j["rmse_m"] = f.rmse_m;
+  j["median_reprojection_px"] = f.median_reprojection_px;
+  j["image_coverage"] = f.image_coverage;
+  j["spread_m"] = f.spread_m;
+  j["pnp_disagreement_m"] = f.pnp_disagreement_m;
+  j["pnp_disagreement_deg"] = rad_to_deg(f.pnp_disagreement_rad);
+  j["pnp_disagreement_chi2"] = f.pnp_disagreement_chi2;
+  return {std::string(fusion::to_string(f.reason)),
+          fmt::format("{} inliers of {} matches", f.inliers, f.matches)};
+}
+
+nlohmann::json depth_icp_json(const fusion::DepthIcpResult& d) {
+  return {
+      {"accepted", d.accepted},
+      {"reason", std::string(fusion::to_string(d.reason))},
+      {"reason_text", d.reason_text},
+      {"points", d.points},
+      {"pairs", d.pairs},
+      {"overlap", d.overlap},
+      {"rmse_m", d.rmse_m},
+      {"rms_sigmas", d.rms_sigmas},
+      {"condition_number", std::isfinite(d.condition_number) ? nlohmann::json(d.condition_number)
+                                                             : nlohmann::json(nullptr)},
+      {"iterations", d.iterations}};
+}
+
+}  // namespace
+
 PairReport pair_report(const std::filesystem::path& folder, const RgbdPair& pair,
-                       const fusion::NodeCreation& prev, const fusion::NodeCreation& curr,
-                       const fusion::MatchResult* match) {
+                       const fusion::FramePairMatch& m) {
   PairReport out;
-  nlohmann::json& pair_json = out.pair;
-  pair_json = {{"folder", folder.string()},
-               {"nodes", {{"prev", node_json(prev)}, {"curr", node_json(curr)}}}};
-  bool& accepted = out.accepted;
-  std::string& reason = out.reason;
-  std::string& summary = out.summary;
-  if (!prev.ok() || !curr.ok()) {
-    const bool prev_failed = !prev.ok();
-    reason = std::string(prev_failed ? "previous" : "current") +
-             " frame: " + std::string(fusion::to_string(prev_failed ? prev.check : curr.check));
-    pair_json["accepted"] = false;
-    pair_json["reason"] = reason;
-    pair_json["reason_text"] = prev_failed ? prev.reason : curr.reason;
-    pair_json["method"] = "none";
-    pair_json["matches"] = 0;
-    pair_json["inliers"] = 0;
-    summary = pair_json["reason_text"].get<std::string>();
-  } else {
-    const fusion::MatchResult& m = *match;
-    accepted = m.accepted;
-    reason = std::string(fusion::to_string(m.reason));
-    pair_json["accepted"] = m.accepted;
-    pair_json["reason"] = reason;
-    pair_json["reason_text"] = m.reason_text;
-    pair_json["method"] = std::string(fusion::to_string(m.method));
-    pair_json["matches"] = m.matches;
-    pair_json["matches_3d"] = m.matches_3d;
-    pair_json["inliers"] = m.inliers;
-    pair_json["inlier_ratio"] = m.inlier_ratio;
-    pair_json["rmse_m"] = m.rmse_m;
-    pair_json["median_reprojection_px"] = m.median_reprojection_px;
-    pair_json["image_coverage"] = m.image_coverage;
-    pair_json["spread_m"] = m.spread_m;
-    pair_json["pnp_disagreement_m"] = m.pnp_disagreement_m;
-    pair_json["pnp_disagreement_deg"] = rad_to_deg(m.pnp_disagreement_rad);
-    pair_json["pnp_disagreement_chi2"] = m.pnp_disagreement_chi2;
-    if (m.method != fusion::MatchMethod::kNone) {
-      pair_json["T_prev_curr"] = transform_json(m.T_prev_curr);
-    }
-    summary = fmt::format("{} inliers of {} matches", m.inliers, m.matches);
-    if (pair.has_ground_truth && m.accepted) {
-      const Eigen::Isometry3d d = pair.T_prev_curr_truth().inverse() * m.T_prev_curr;
-      pair_json["translation_error_m"] = d.translation().norm();
-      pair_json["rotation_error_deg"] = rad_to_deg(Eigen::AngleAxisd(d.linear()).angle());
-      summary += fmt::format("; error {:.4f} m, {:.3f} deg", d.translation().norm(),
-                             rad_to_deg(Eigen::AngleAxisd(d.linear()).angle()));
-    }
+  nlohmann::json& j = out.pair;
+  j = {{"folder", folder.string()}};
+  std::string method = "none";
+  std::string reason_text;
+  if (m.prev && m.curr) {
+    j["nodes"] = {{"prev", node_json(*m.prev)}, {"curr", node_json(*m.curr)}};
+    std::tie(out.reason, out.summary) = feature_keys(m, j);
+    reason_text = m.features ? m.features->reason_text : out.summary;
+    if (m.features) method = std::string(fusion::to_string(m.features->method));
   }
-  if (pair.has_ground_truth) {
-    pair_json["ground_truth_T_prev_curr"] = transform_json(pair.T_prev_curr_truth());
+  if (m.depth) {
+    // The depth ICP decided (issue 18 item 10); the feature path's verdict stays beside it.
+    if (m.prev) j["features_reason"] = out.reason;
+    j["depth_icp"] = depth_icp_json(*m.depth);
+    method = "depth-icp";
+    out.reason = m.depth->accepted
+                     ? "accepted by depth ICP"
+                     : "depth ICP: " + std::string(fusion::to_string(m.depth->reason));
+    reason_text = m.depth->reason_text;
+    out.summary = reason_text;
   }
+  out.accepted = m.accepted;
+  j["accepted"] = m.accepted;
+  j["reason"] = out.reason;
+  j["reason_text"] = reason_text;
+  j["method"] = method;
+  if (method != "none") j["T_prev_curr"] = transform_json(m.T_prev_curr);
+  if (pair.has_ground_truth && m.accepted) {
+    const Eigen::Isometry3d d = pair.T_prev_curr_truth().inverse() * m.T_prev_curr;
+    const double rotation_deg = rad_to_deg(Eigen::AngleAxisd(d.linear()).angle());
+    j["translation_error_m"] = d.translation().norm();
+    j["rotation_error_deg"] = rotation_deg;
+    out.summary +=
+        fmt::format("; error {:.4f} m, {:.3f} deg", d.translation().norm(), rotation_deg);
+  }
+  if (pair.has_ground_truth)
+    j["ground_truth_T_prev_curr"] = transform_json(pair.T_prev_curr_truth());
   return out;
 }
 
-nlohmann::json pair_options_json(const std::filesystem::path& folder, fusion::FeatureType type,
-                                 const RgbdPair& pair, const fusion::ImageNodeOptions& node_options,
-                                 const fusion::NodeMatcherOptions& match_options) {
+nlohmann::json pair_options_json(const std::filesystem::path& folder, const RgbdPair& pair,
+                                 const fusion::FramePairOptions& options) {
+  const fusion::ImageNodeOptions& node_options = options.node;
+  const fusion::NodeMatcherOptions& match_options = options.matcher;
+  const fusion::DepthIcpOptions& icp = options.icp;
   return {{"mode", "pair"},
+          {"pair_method", std::string(fusion::to_string(options.method))},
           {"pair", folder.string()},
-          {"features", std::string(fusion::to_string(type))},
+          {"features", std::string(fusion::to_string(node_options.feature_type))},
           {"intrinsics",
            {{"fx_px", pair.prev.intrinsics.fx_px},
             {"fy_px", pair.prev.intrinsics.fy_px},
@@ -267,7 +307,14 @@ nlohmann::json pair_options_json(const std::filesystem::path& folder, fusion::Fe
           {"min_image_coverage", match_options.min_image_coverage},
           {"min_spread_m", match_options.min_spread_m},
           {"max_median_reprojection_px", match_options.max_median_reprojection_px},
-          {"pnp_fallback", match_options.pnp_fallback}};
+          {"pnp_fallback", match_options.pnp_fallback},
+          {"depth_icp",
+           {{"levels", icp.levels},
+            {"finest_block_px", icp.finest_block_px},
+            {"max_pair_distance_m", icp.max_pair_distance_m},
+            {"min_overlap", icp.min_overlap},
+            {"max_rms_sigmas", icp.max_rms_sigmas},
+            {"max_condition_number", icp.max_condition_number}}}};
 }
 
 }  // namespace tessera::cli

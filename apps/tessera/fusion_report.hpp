@@ -12,12 +12,13 @@
 #include "tessera/core/result.hpp"
 #include "tessera/core/stamped_pose2.hpp"
 #include "tessera/fusion/feature_type.hpp"
+#include "tessera/fusion/frame_pair_match.hpp"
 #include "tessera/fusion/fusion_slam.hpp"
 #include "tessera/fusion/image_node.hpp"
 #include "tessera/fusion/node_matcher.hpp"
-#include "tessera/render/hex_map_svg.hpp"
 #include "tessera/io/rgbd_pair_folder.hpp"
 #include "tessera/mission/teach_and_repeat.hpp"
+#include "tessera/render/hex_map_svg.hpp"
 #include "tessera/sim/world.hpp"
 
 namespace tessera::cli {
@@ -47,7 +48,7 @@ void print_slam_summary(const std::string& what, fusion::FeatureType type,
                         const std::filesystem::path& out, bool wrote_truth);
 
 /// --pair: the "pair" block, whether the pair was accepted, the reason and the summary line's
-/// text. `match` is null when a frame failed its node checks.
+/// text.
 struct PairReport {
   nlohmann::json pair;
   bool accepted = false;
@@ -55,10 +56,8 @@ struct PairReport {
   std::string summary;
 };
 PairReport pair_report(const std::filesystem::path& folder, const RgbdPair& pair,
-                       const fusion::NodeCreation& prev, const fusion::NodeCreation& curr,
-                       const fusion::MatchResult* match);
-nlohmann::json pair_options_json(const std::filesystem::path& folder, fusion::FeatureType type,
-                                 const RgbdPair& pair, const fusion::ImageNodeOptions& node_options,
-                                 const fusion::NodeMatcherOptions& match_options);
+                       const fusion::FramePairMatch& match);
+nlohmann::json pair_options_json(const std::filesystem::path& folder, const RgbdPair& pair,
+                                 const fusion::FramePairOptions& options);
 
 }  // namespace tessera::cli

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "internal/fixed_text.hpp"
+#include "internal/left_perturbation.hpp"
 #include "internal/opencv_features.hpp"
 #include "tessera/fusion/rigid_fit.hpp"
 
@@ -351,14 +352,7 @@ Attempt pnp_from_prev(const ImageNode& prev, const ImageNode& curr, const std::v
   return a;
 }
 
-/// A small motion xi = (rotation vector, translation) applied on the left: exp(xi) * T.
-Eigen::Isometry3d perturbed(const Eigen::Isometry3d& T, const Eigen::Matrix<double, 6, 1>& xi) {
-  Eigen::Isometry3d E = Eigen::Isometry3d::Identity();
-  const double angle = xi.head<3>().norm();
-  if (angle > 0.0) E.linear() = Eigen::AngleAxisd(angle, xi.head<3>() / angle).toRotationMatrix();
-  E.translation() = xi.tail<3>();
-  return E * T;
-}
+using internal::perturbed;
 
 /// Covariance (6 x 6, over xi of perturbed(T_prev_curr, xi)) of a least-squares estimate, from
 /// its whitened residuals r(xi) (one block per point) by Gauss-Newton: (J^T J)^-1, with J by

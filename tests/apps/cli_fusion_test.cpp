@@ -94,24 +94,55 @@ TEST(CliFusion, WrongDepthIsSolvedWithoutItOrRejectedWithAReason) {
   }
 }
 
-// A frame that fails the node checks (thesis 4.3.1) is a refusal with a reason, not an error: here
-// the current colour image is a plain grey wall (a binary PGM, which the reader decodes too).
-TEST(CliFusion, FrameFailingTheNodeChecksIsReportedAsRejected) {
+// A frame that fails the node checks (thesis 4.3.1): here the current colour image is a plain grey
+// wall (a binary PGM, which the reader decodes too). The thesis' method refuses with the reason;
+// by default the depth images, which still show the desk, solve it (issue 18 item 10).
+TEST(CliFusion, FrameFailingTheNodeChecksIsSolvedFromDepthOrRejectedWithTheReason) {
   TESSERA_REQUIRE_DATA(support::data_path(kPairs / "case_1"));
   TempDir dir;
   const auto folder = copy_case(dir, "case_1");
   support::write_bytes(folder / "img_curr.png",
                        "P5\n640 480\n255\n" + std::string(640 * 480, static_cast<char>(200)));
-  const auto out = dir.path() / "out";
-  const support::CliRun run =
-      run_cli("fusion --pair " + folder.string() + " --out " + out.string());
-  ASSERT_EQ(run.exit_code, 0) << run.output;
-  EXPECT_THAT(run.output, HasSubstr("rejected"));
-  const nlohmann::json pair = read_report(out)["pair"];
+  const auto thesis = dir.path() / "thesis";
+  const support::CliRun refused = run_cli("fusion --pair " + folder.string() +
+                                          " --pair-method features --out " + thesis.string());
+  ASSERT_EQ(refused.exit_code, 0) << refused.output;
+  EXPECT_THAT(refused.output, HasSubstr("rejected"));
+  const nlohmann::json pair = read_report(thesis)["pair"];
   EXPECT_EQ(pair["accepted"], false);
   EXPECT_EQ(pair["reason"], "current frame: too few features");
+  EXPECT_EQ(pair["method"], "none");
   EXPECT_EQ(pair["nodes"]["prev"]["check"], "ok");
   EXPECT_FALSE(pair.contains("translation_error_m"));
+  EXPECT_FALSE(pair.contains("depth_icp"));
+
+  const auto out = dir.path() / "out";
+  const support::CliRun solved =
+      run_cli("fusion --pair " + folder.string() + " --out " + out.string());
+  ASSERT_EQ(solved.exit_code, 0) << solved.output;
+  EXPECT_THAT(solved.output, HasSubstr("accepted"));
+  const nlohmann::json report = read_report(out);
+  EXPECT_EQ(report["options"]["pair_method"], "auto");
+  const nlohmann::json& by_depth = report["pair"];
+  EXPECT_EQ(by_depth["accepted"], true);
+  EXPECT_EQ(by_depth["reason"], "accepted by depth ICP");
+  EXPECT_EQ(by_depth["features_reason"], "current frame: too few features");
+  EXPECT_EQ(by_depth["method"], "depth-icp");
+  EXPECT_EQ(by_depth["depth_icp"]["accepted"], true);
+  EXPECT_LT(by_depth["translation_error_m"].get<double>(), 0.02);
+  EXPECT_LT(by_depth["rotation_error_deg"].get<double>(), 1.0);
+}
+
+TEST(CliFusion, UnknownPairMethodIsAUsageErrorAndWritesNothing) {
+  TESSERA_REQUIRE_DATA(support::data_path(kPairs / "case_1"));
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  const support::CliRun run =
+      run_cli("fusion --pair " + support::data_path(kPairs / "case_1").string() +
+              " --pair-method icp --out " + out.string());
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_THAT(run.output, HasSubstr("unknown pair method 'icp'"));
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 TEST(CliFusion, UnknownFeatureTypeIsAnInputErrorAndWritesNothing) {

@@ -77,7 +77,7 @@ def odometry_xyt(log, xyt):
             g.write(f"{v[p + 6]} {v[p + 3]} {v[p + 4]} {v[p + 5]}\n")
 
 
-def run_one(tessera, out_root, name, seed, drift):
+def run_one(tessera, slam_args, out_root, name, seed, drift):
     case = out_root / f"{name}_d{drift}_s{seed}"
     case.mkdir(parents=True, exist_ok=True)
     log, truth = case / "input.log", case / "truth.xyt"
@@ -87,7 +87,7 @@ def run_one(tessera, out_root, name, seed, drift):
     odometry_xyt(log, case / "odometry.xyt")
     t0 = time.monotonic()
     proc = subprocess.run([tessera, "slam", "--quiet", "--log", str(log), "--out",
-                           str(case / "slam")], capture_output=True, text=True)
+                           str(case / "slam")] + slam_args, capture_output=True, text=True)
     wall_s = time.monotonic() - t0
     if proc.returncode != 0:
         return dict(name=name, seed=seed, drift=drift, error=proc.stderr.strip())
@@ -105,6 +105,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--out", default=str(ROOT / "out/slam-logs"))
     ap.add_argument("--images", help="copy each log's first-seed map here")
+    ap.add_argument("--slam-args", default="",
+                    help="more options for every tessera slam run, e.g. '--manhattan'")
     ap.add_argument("--check-bar", action="store_true",
                     help="also fail (exit 1) when a run is over the issue's bar")
     args = ap.parse_args()
@@ -121,7 +123,8 @@ def main():
     t0 = time.monotonic()
     cases = [(n, s, d) for n in args.logs for d in args.drifts for s in args.seeds]
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        results = list(pool.map(lambda c: run_one(args.tessera, out_root, *c), cases))
+        results = list(pool.map(
+            lambda c: run_one(args.tessera, args.slam_args.split(), out_root, *c), cases))
     total_s = time.monotonic() - t0
 
     print("| Log | Drift (deg/m) | Seed | ATE odometry (m) | ATE tessera (m) | Odometry / tessera "

@@ -61,6 +61,9 @@ SlamCommand::SlamCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   sub_->add_flag("--no-loop-closure", no_loop_closure_,
                  "Local SLAM only: scan-to-submap matching, no pose graph corrections");
+  sub_->add_flag("--manhattan", manhattan_,
+                 "Walls at right angles: a heading prior on every node whose scan shows a "
+                 "dominant wall direction (docs/slam-manhattan.md)");
   add_output_stream_options(*sub_, streams_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
   add_ros_options();
@@ -82,6 +85,7 @@ int SlamCommand::run() const {
   if (Status s = check_session_options(); !s) return report_error(s.error());
   slam::LaserSlamOptions options;
   options.loop_closure = !no_loop_closure_;
+  options.manhattan = manhattan_;
 
   // Inputs first: a bad log, world or relations file must leave nothing behind.
   std::optional<LaserLog> read_log;

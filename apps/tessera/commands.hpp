@@ -208,6 +208,7 @@ class SlamCommand : public Command {
   double time_offset_s_ = 0.0;
   std::optional<double> cell_m_;  // default: 0.05 m for a log, the world's cell for a simulated run
   bool no_loop_closure_ = false;
+  bool manhattan_ = false;  // Manhattan heading priors (issue 18 item 7)
   OutputStreams streams_;  // --record, --serve
   bool quiet_ = false;
   // --ros: the live SLAM node on Cyclone DDS (cmd_slam_ros.cpp).

@@ -49,6 +49,27 @@ class RelativePoseError {
   Eigen::Matrix3d sqrt_information_;
 };
 
+/// Residual of one heading prior (pose_graph.hpp): the node's heading plus the offset, minus the
+/// axis, wrapped into [-period/2, period/2), over sigma.
+class HeadingPriorError {
+ public:
+  explicit HeadingPriorError(const HeadingPrior& prior, double period_rad)
+      : prior_(prior), period_rad_(period_rad) {}
+
+  template <typename T>
+  bool operator()(const T* const pose, const T* const axis, T* residual) const {
+    using std::floor;
+    const T period(period_rad_);
+    const T a = pose[2] + T(prior_.offset_rad) - axis[0];
+    residual[0] = (a - period * floor((a + T(0.5) * period) / period)) / T(prior_.sigma_rad);
+    return true;
+  }
+
+ private:
+  HeadingPrior prior_;
+  double period_rad_;
+};
+
 }  // namespace
 
 Result<OptimizeSummary> optimize(PoseGraph& graph, const OptimizeOptions& options) {
@@ -77,6 +98,16 @@ Result<OptimizeSummary> optimize(PoseGraph& graph, const OptimizeOptions& option
     ceres::LossFunction* loss = edge.robust ? new ceres::HuberLoss(options.huber_scale) : nullptr;
     problem.AddResidualBlock(cost, loss, params[edge.from].data(), params[edge.to].data());
   }
+  double axis = graph.axis_rad;
+  for (const HeadingPrior& prior : graph.heading_priors) {
+    if (prior.node < 0 || prior.node >= n || !(prior.sigma_rad > 0.0)) {
+      return runtime_error("heading prior on node " + std::to_string(prior.node) +
+                           ": no such node or sigma_rad not > 0");
+    }
+    auto* cost = new ceres::AutoDiffCostFunction<HeadingPriorError, 1, 3, 1>(
+        new HeadingPriorError(prior, graph.heading_period_rad));
+    problem.AddResidualBlock(cost, new ceres::CauchyLoss(1.0), params[prior.node].data(), &axis);
+  }
   OptimizeSummary out;
   if (problem.NumResidualBlocks() == 0) {
     out.converged = true;
@@ -103,6 +134,7 @@ Result<OptimizeSummary> optimize(PoseGraph& graph, const OptimizeOptions& option
   for (int i = 0; i < n; ++i) {
     graph.poses[i] = {params[i][0], params[i][1], normalize_angle(params[i][2])};
   }
+  graph.axis_rad = axis;
   out.initial_cost = summary.initial_cost;
   out.final_cost = summary.final_cost;
   // The steps Ceres took, as max_num_iterations counts them (summary.iterations also holds the

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <queue>
 #include <string>
 
@@ -128,6 +129,11 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
   if (auto p = validate(o.start_sigmas, "start_sigmas")) return p;
   if (!(o.map_resolution_m > 0.0)) return "map_resolution_m must be > 0";
   if (auto p = validate(o.map_insert)) return "map_insert." + *p;
+  if (auto p = validate(o.wall_direction)) return "wall_direction." + *p;
+  if (o.manhattan && !(o.manhattan_sigma_rad > 0.0 && o.manhattan_rotation_weight >= 0.0 &&
+                       o.manhattan_gate_rad >= 0.0)) {
+    return "manhattan_sigma_rad must be > 0, manhattan_rotation_weight and manhattan_gate_rad >= 0";
+  }
   return std::nullopt;
 }
 
@@ -171,6 +177,8 @@ struct LaserSlam::Impl {
   Rng wrong_closures;  // draws for wrong_closure_share
 
   posegraph::PoseGraph graph;
+  /// options.manhattan: the building's axis in the local-SLAM frame, once a scan has shown it.
+  std::optional<double> axis_local_rad;
   std::vector<int> vertex_scan;
   std::vector<Node> nodes;
   std::vector<SubmapRecord> submap_records;
@@ -454,6 +462,7 @@ struct LaserSlam::Impl {
     const int scan_index = static_cast<int>(scans.size());
     ScanPoints points = scan_to_points(scan.scan, scan.laser_in_robot, options.points);
     const std::vector<Vec2> matching = voxel_filter(points.returns_m, options.matching_voxel_m);
+    const std::optional<WallDirection> wall = manhattan_wall(points);
 
     // Prior: the last pose moved by the odometry increment (file order, whatever the stamps). The
     // first scan of a new trajectory is where start_trajectory() put it, in the local frame as
@@ -475,9 +484,11 @@ struct LaserSlam::Impl {
         start = match_real_time(submap.grid(), prior, matching, options.real_time).T_grid_robot;
       }
       const RefinedPose refined =
-          refine_scan(submap.grid(), prior, start, matching, options.refiner);
+          refine_scan(submap.grid(), prior, start, matching, options.refiner,
+                      manhattan_heading(wall, submap, start));
       T_local = submap.local_pose() * refined.T_grid_robot;
     }
+    if (wall && !axis_local_rad) axis_local_rad = T_local.theta + wall->angle_rad;
     last_odometry = scan.odometry;
     last_T_local = T_local;
     last_t_s = scan.t_s;
@@ -517,6 +528,7 @@ struct LaserSlam::Impl {
     node.T_local_robot = T_local;
     node.travel_m = travel_m;
     node.loop_points = adaptive_voxel_filter(points.returns_m, options.loop_points);
+    if (wall) add_heading_prior(node.vertex, *wall);
     node.points = std::move(points);
     node.submaps = insertion.inserted_into;
     const Eigen::Matrix3d submap_information =
@@ -564,6 +576,37 @@ struct LaserSlam::Impl {
     return Ok{};
   }
 
+  /// The scan's dominant wall direction when options.manhattan (wall_direction.hpp).
+  [[nodiscard]] std::optional<WallDirection> manhattan_wall(const ScanPoints& points) const {
+    if (!options.manhattan) return std::nullopt;
+    return dominant_wall_direction(points.returns_m, points.return_beams, options.wall_direction);
+  }
+
+  /// The heading (submap frame) that puts the scan's walls along the local axis, the nearest such
+  /// to the search's result, when it is within the gate (options.manhattan).
+  std::optional<HeadingTarget> manhattan_heading(const std::optional<WallDirection>& wall,
+                                                 const Submap& submap,
+                                                 const Pose2& T_grid_robot_start) {
+    if (!wall || !axis_local_rad || !(options.manhattan_rotation_weight > 0.0)) return std::nullopt;
+    constexpr double kQuarter = 0.5 * std::numbers::pi;
+    const double aligned = *axis_local_rad - wall->angle_rad - submap.local_pose().theta;
+    const double off = aligned - T_grid_robot_start.theta;
+    const double folded = off - kQuarter * std::round(off / kQuarter);
+    if (std::abs(folded) > options.manhattan_gate_rad) return std::nullopt;
+    ++stats.manhattan_pulls;
+    return HeadingTarget{T_grid_robot_start.theta + folded, options.manhattan_rotation_weight};
+  }
+
+  /// The Manhattan prior of a node whose scan shows a dominant wall direction; the first one
+  /// sets the building's axis where that node's walls point.
+  void add_heading_prior(int vertex, const WallDirection& wall) {
+    if (graph.heading_priors.empty()) {
+      graph.axis_rad = normalize_angle(global_pose(vertex).theta + wall.angle_rad);
+    }
+    graph.heading_priors.push_back({vertex, wall.angle_rad, options.manhattan_sigma_rad});
+    ++stats.manhattan_priors;
+  }
+
   /// The first node of a new trajectory: a constraint to the nearest node of the earlier ones,
   /// where start_trajectory() placed it, and its submaps joined to that node's as if by a loop
   /// closure, so that the loop searches around it start from a small window.
@@ -586,7 +629,7 @@ struct LaserSlam::Impl {
 
   Status start_trajectory(const Pose2& T_map_robot) {
     if (!nodes.empty()) {
-      if (stats.loop_closures > 0) {
+      if (stats.loop_closures > 0 || !graph.heading_priors.empty()) {
         if (Status s = optimize_graph(true); !s) return s;
       }
       for (const int id : submaps.finish_all()) on_submap_finished(id);
@@ -649,7 +692,7 @@ struct LaserSlam::Impl {
   }
 
   Result<LaserSlamResult> finish() {
-    if (stats.loop_closures > 0) {
+    if (stats.loop_closures > 0 || !graph.heading_priors.empty()) {
       if (Status s = optimize_graph(true); !s) return s.error();
     }
     LaserSlamResult out = result();

@@ -46,7 +46,7 @@ struct Evaluation {
 class Problem {
  public:
   Problem(const ProbabilityGrid& grid, const Pose2& prior, const std::vector<Vec2>& points,
-          const ScanRefinerOptions& options)
+          const ScanRefinerOptions& options, const std::optional<HeadingTarget>& heading)
       : adapter_(grid),
         interpolator_(adapter_),
         origin_(grid.geometry().origin()),
@@ -54,6 +54,7 @@ class Problem {
         prior_(prior),
         points_(points),
         options_(options),
+        heading_(heading),
         point_scale_(options.occupied_space_weight /
                      std::sqrt(static_cast<double>(std::max<std::size_t>(points.size(), 1)))) {}
 
@@ -90,6 +91,15 @@ class Problem {
       e.JtJ.diagonal() += d.cwiseProduct(d);
       e.Jtr += d.cwiseProduct(r_prior);
     }
+    if (heading_) {
+      const double w = heading_->weight_per_rad;
+      const double r = w * normalize_angle(x[2] - heading_->theta_rad);
+      e.cost += r * r;
+      if (with_derivatives) {
+        e.JtJ(2, 2) += w * w;
+        e.Jtr(2) += w * r;
+      }
+    }
     return e;
   }
 
@@ -101,6 +111,7 @@ class Problem {
   Pose2 prior_;
   const std::vector<Vec2>& points_;
   ScanRefinerOptions options_;
+  std::optional<HeadingTarget> heading_;
   double point_scale_;
 };
 
@@ -116,8 +127,9 @@ std::optional<std::string> validate(const ScanRefinerOptions& o) {
 
 RefinedPose refine_scan(const ProbabilityGrid& grid, const Pose2& T_grid_robot_prior,
                         const Pose2& T_grid_robot_start, const std::vector<Vec2>& points_robot,
-                        const ScanRefinerOptions& options) {
-  const Problem problem(grid, T_grid_robot_prior, points_robot, options);
+                        const ScanRefinerOptions& options,
+                        const std::optional<HeadingTarget>& heading) {
+  const Problem problem(grid, T_grid_robot_prior, points_robot, options, heading);
   // The heading is kept continuous around the prior so that the solver never sees the wrap.
   Eigen::Vector3d x(T_grid_robot_start.x, T_grid_robot_start.y,
                     T_grid_robot_prior.theta +

@@ -61,6 +61,29 @@ TEST(RefineScan, WeightsHoldThePoseAtThePrior) {
   EXPECT_NEAR(free.T_grid_robot.y, truth.y, 0.01);
 }
 
+// A heading target (the Manhattan pull of laser_slam.hpp) moves the heading towards it in
+// proportion to its weight: none at weight 0, nearly all the way when it dominates the scan.
+TEST(RefineScan, AHeadingTargetPullsTheHeadingByItsWeight) {
+  const World room = furnished_room();
+  const ProbabilityGrid grid = grid_from_scans(room, {{2.0, 3.0, 0.0}, {8.0, 3.0, -2.0}});
+  const Pose2 T_world_robot{3.0, 3.0, 0.0};
+  const Pose2 truth = kT_grid_world * T_world_robot;
+  const std::vector<Vec2> points =
+      scan_to_points(ideal_scan(room, T_world_robot), {}, ScanPointsOptions{}).returns_m;
+  const ScanRefinerOptions free{1.0, 0.0, 0.0, 20};
+  const double target = truth.theta + 0.02;
+  const RefinedPose none =
+      refine_scan(grid, truth, truth, points, free, HeadingTarget{target, 0.0});
+  const RefinedPose weak =
+      refine_scan(grid, truth, truth, points, free, HeadingTarget{target, 1.0});
+  const RefinedPose strong =
+      refine_scan(grid, truth, truth, points, free, HeadingTarget{target, 1e3});
+  EXPECT_NEAR(none.T_grid_robot.theta, truth.theta, 0.003);
+  EXPECT_GT(weak.T_grid_robot.theta, none.T_grid_robot.theta);
+  EXPECT_LT(weak.T_grid_robot.theta, strong.T_grid_robot.theta);
+  EXPECT_NEAR(strong.T_grid_robot.theta, target, 0.002);
+}
+
 TEST(ScanRefinerOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
   EXPECT_FALSE(validate(ScanRefinerOptions{}).has_value());
   ScanRefinerOptions o;

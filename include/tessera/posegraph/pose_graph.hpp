@@ -19,11 +19,28 @@ struct PoseGraphEdge {
   bool robust = false;
 };
 
+/// "Mapping using knowledge of the environment" (lecture, section on SLAM): in a building of
+/// straight walls at right angles (a Manhattan world, Coughlan & Yuille 1999), the dominant wall
+/// direction a node's scan shows, offset_rad in the robot frame, lies along the building's axis or
+/// across it. The prior: poses[node].theta + offset_rad - axis_rad is a multiple of
+/// heading_period_rad, with standard deviation sigma_rad, under a Cauchy loss (a scan whose walls
+/// are not along the axes is an outlier, not a pull).
+struct HeadingPrior {
+  int node = 0;
+  double offset_rad = 0.0;
+  double sigma_rad = 0.05;
+};
+
 /// A 2D pose graph: node i has pose poses[i] (world frame) and the g2o id ids[i].
 struct PoseGraph {
   std::vector<Pose2> poses;
   std::vector<int> ids;
   std::vector<PoseGraphEdge> edges;
+  /// Manhattan priors (empty: none) and the building's axis in the world frame, which the
+  /// optimisation estimates with the poses when there are priors.
+  std::vector<HeadingPrior> heading_priors;
+  double axis_rad = 0.0;
+  double heading_period_rad = 1.5707963267948966;  // pi / 2: walls along and across the axis
 };
 
 struct OptimizeOptions {

@@ -42,11 +42,19 @@ struct RefinedPose {
   Eigen::Matrix3d hessian = Eigen::Matrix3d::Zero();
 };
 
+/// A heading the scan should have besides the prior's, e.g. the one that puts its walls along the
+/// building's axes (laser_slam.hpp, manhattan): cost + (weight_per_rad * (theta - theta_rad))^2.
+struct HeadingTarget {
+  double theta_rad = 0.0;
+  double weight_per_rad = 0.0;
+};
+
 /// Refines the pose of points_robot in `grid`, starting at T_grid_robot_start and regularised
-/// towards T_grid_robot_prior. Cost: O(iterations * points).
+/// towards T_grid_robot_prior (and `heading`, when given). Cost: O(iterations * points).
 [[nodiscard]] RefinedPose refine_scan(const ProbabilityGrid& grid, const Pose2& T_grid_robot_prior,
                                       const Pose2& T_grid_robot_start,
                                       const std::vector<Vec2>& points_robot,
-                                      const ScanRefinerOptions& options);
+                                      const ScanRefinerOptions& options,
+                                      const std::optional<HeadingTarget>& heading = std::nullopt);
 
 }  // namespace tessera::slam

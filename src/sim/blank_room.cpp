@@ -1,9 +1,10 @@
 #include "tessera/sim/blank_room.hpp"
 
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 #include <utility>
+
+#include "tessera/sim/builtin_world.hpp"
 
 namespace tessera {
 namespace {
@@ -14,16 +15,7 @@ constexpr int kHeightCells = 100;  // 5 m
 constexpr double kWestX = 0.05, kSouthY = 0.05;
 
 World blank_room_world() {
-  std::vector<std::uint8_t> solid(static_cast<std::size_t>(kWidthCells * kHeightCells), 0);
-  for (int y = 0; y < kHeightCells; ++y) {
-    for (int x = 0; x < kWidthCells; ++x) {
-      if (x == 0 || y == 0 || x == kWidthCells - 1 || y == kHeightCells - 1) {
-        solid[static_cast<std::size_t>(y * kWidthCells + x)] = 1;
-      }
-    }
-  }
-  return World(GridGeometry({0.0, 0.0}, kResolutionM, kWidthCells, kHeightCells), solid,
-               "blank_room");
+  return walled_room(kWidthCells, kHeightCells, kResolutionM, "blank_room");
 }
 
 /// Facing the south-west corner along the diagonal, distance_m from it.

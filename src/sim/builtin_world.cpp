@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 
 namespace tessera {
 namespace {
@@ -129,6 +130,19 @@ World builtin_world(const std::string& name, double resolution_m) {
   if (name == "bob-arena-open") return bob_arena(resolution_m, false);
   if (name == "lecture-corner") return lecture_corner(resolution_m);
   return World();
+}
+
+World walled_room(int width_cells, int height_cells, double resolution_m, std::string name) {
+  std::vector<std::uint8_t> solid(static_cast<std::size_t>(width_cells) * height_cells, 0);
+  for (int y = 0; y < height_cells; ++y) {
+    for (int x = 0; x < width_cells; ++x) {
+      if (x == 0 || y == 0 || x == width_cells - 1 || y == height_cells - 1) {
+        solid[static_cast<std::size_t>(y) * width_cells + x] = 1;
+      }
+    }
+  }
+  return World(GridGeometry({0.0, 0.0}, resolution_m, width_cells, height_cells), solid,
+               std::move(name));
 }
 
 }  // namespace tessera

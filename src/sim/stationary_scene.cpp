@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "tessera/core/assert.hpp"
+#include "tessera/sim/builtin_world.hpp"
 #include "tessera/sim/wall_faces.hpp"
 
 namespace tessera {
@@ -16,16 +17,7 @@ constexpr int kHeightCells = 120;  // 6 m
 constexpr double kEastX = 7.95, kNorthY = 5.95, kWestX = 0.05, kSouthY = 0.05;
 
 World stationary_room() {
-  std::vector<std::uint8_t> solid(static_cast<std::size_t>(kWidthCells * kHeightCells), 0);
-  for (int y = 0; y < kHeightCells; ++y) {
-    for (int x = 0; x < kWidthCells; ++x) {
-      if (x == 0 || y == 0 || x == kWidthCells - 1 || y == kHeightCells - 1) {
-        solid[static_cast<std::size_t>(y * kWidthCells + x)] = 1;
-      }
-    }
-  }
-  return World(GridGeometry({0.0, 0.0}, kResolutionM, kWidthCells, kHeightCells), solid,
-               "stationary_room");
+  return walled_room(kWidthCells, kHeightCells, kResolutionM, "stationary_room");
 }
 
 /// A poster of the given size centred at `center` (a point on the wall) at camera height (1.03 m,

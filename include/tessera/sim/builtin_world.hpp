@@ -21,4 +21,10 @@ namespace tessera {
 /// in it at 0.3 m.
 [[nodiscard]] World builtin_world(const std::string& name, double resolution_m = 0.1);
 
+/// An empty room of width_cells x height_cells cells of resolution_m whose border cells are
+/// walls (one cell thick), origin at (0, 0): the rooms of the camera tests (stationary_scene.hpp,
+/// blank_room.hpp).
+[[nodiscard]] World walled_room(int width_cells, int height_cells, double resolution_m,
+                                std::string name);
+
 }  // namespace tessera

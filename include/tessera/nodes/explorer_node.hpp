@@ -6,7 +6,9 @@
 //   SLAM       /r1/scan, /r1/odom, /tf, /tf_static in; /r1/map, /r1/pose, map -> odom out
 //   drives     /r1/cmd_vel geometry_msgs/Twist (reliable, depth 10)
 //   team       /rK/map of every teammate in (transient local: a late joiner gets them);
-//              /team/map out: the merged map in the team frame, and teammates' /team/map in,
+//              /team/map out: its own map merged with its teammates' own maps in the team frame
+//              (never the cells it filled from theirs: team maps do not feed back), and
+//              teammates' /team/map in,
 //              which fills the cells no live teammate's map knows (a robot that rejoins gets the
 //              map of one that died); /team/claims tessera_msgs/FrontierClaim in and out;
 //              /team/status tessera_msgs/RobotStatus out (state, stop reason, pose, counters);

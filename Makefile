@@ -60,6 +60,17 @@ bench: build
 slam-table: cli
 	python3 scripts/slam_log_table.py --images docs/images
 
+# Issue 18 item 7: the same table with --manhattan (docs/slam-manhattan.md).
+.PHONY: slam-table-manhattan
+slam-table-manhattan: cli
+	python3 scripts/slam_log_table.py --slam-args=--manhattan --out out/slam-logs-manhattan
+
+# Issue 18 item 10: motion from depth alone on blank simulated views and the real TUM pairs
+# (docs/fusion-depth-icp.md).
+.PHONY: depth-icp-table
+depth-icp-table: build
+	build/dev/bench/fusion/depth_icp_table 10
+
 # Issue 16's localization figures on the Intel log: map 0-600 s, localize 600-1,088 s (relations,
 # real-time factor), relocalize from 50 starts with no initial pose, 10 kidnappings
 # (docs/localization.md).

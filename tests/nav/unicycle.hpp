@@ -6,6 +6,7 @@
 
 #include "tessera/core/angle.hpp"
 #include "tessera/core/pose2.hpp"
+#include "tessera/eval/heading_reversals.hpp"
 #include "tessera/nav/velocity_command.hpp"
 
 namespace tessera::nav_test {
@@ -25,53 +26,6 @@ inline Pose2 integrate(const Pose2& pose, VelocityCommand c, double dt_s) {
   return {pose.x + dx, pose.y + dy, normalize_angle(pose.theta + dth)};
 }
 
-/// Counts swings of the heading: a reversal is the heading turning back by more than threshold_rad
-/// from its last extreme (hysteresis, so sensor-level jitter does not count).
-class ReversalCounter {
- public:
-  explicit ReversalCounter(double threshold_rad) : threshold_(threshold_rad) {}
-  void add(double heading_rad) {
-    if (!started_) {
-      started_ = true;
-      extreme_ = unwrapped_ = heading_rad;
-      last_ = heading_rad;
-      return;
-    }
-    unwrapped_ += normalize_angle(heading_rad - last_);
-    last_ = heading_rad;
-    if (direction_ == 0) {  // no swing yet: wait for the first turn beyond the threshold
-      if (std::abs(unwrapped_ - extreme_) > threshold_) {
-        direction_ = unwrapped_ > extreme_ ? 1 : -1;
-        extreme_ = unwrapped_;
-      }
-      return;
-    }
-    if (direction_ > 0) {
-      if (unwrapped_ > extreme_) extreme_ = unwrapped_;
-      if (unwrapped_ < extreme_ - threshold_) {
-        ++reversals_;
-        direction_ = -1;
-        extreme_ = unwrapped_;
-      }
-    } else {
-      if (unwrapped_ < extreme_) extreme_ = unwrapped_;
-      if (unwrapped_ > extreme_ + threshold_) {
-        ++reversals_;
-        direction_ = 1;
-        extreme_ = unwrapped_;
-      }
-    }
-  }
-  [[nodiscard]] int reversals() const { return reversals_; }
-
- private:
-  double threshold_;
-  bool started_ = false;
-  double last_ = 0.0, unwrapped_ = 0.0, extreme_ = 0.0;
-  int direction_ = 0;
-  int reversals_ = 0;
-};
-
 struct DriveResult {
   std::vector<Pose2> poses;
   double length_m = 0.0;
@@ -86,7 +40,7 @@ template <typename Controller>
 DriveResult drive(Controller& controller, Pose2 start, double dt_s, double max_time_s,
                   double reversal_threshold_rad = 0.1) {
   DriveResult r;
-  ReversalCounter reversals(reversal_threshold_rad);
+  HeadingReversalCounter reversals(reversal_threshold_rad);
   Pose2 pose = start;
   r.poses.push_back(pose);
   reversals.add(pose.theta);

@@ -62,6 +62,79 @@ TEST(ReactiveAvoidance, ObstaclesBehindTheSideDoNotTurnTheRobot) {
   EXPECT_EQ(a.last_action(), AvoidanceAction::kPassThrough);
 }
 
+// Ours: with a strip half-width, a wall beside a corridor does not turn the robot, an obstacle in
+// the strip ahead does (thesis' rule: both do).
+TEST(ReactiveAvoidance, WithAPathStripOnlyObstaclesInTheStripAheadTurnTheRobot) {
+  ObstacleSensing wall_beside;
+  wall_beside.sonar = {{1.5708, 0.15}, {0.8727, 0.35}};  // a wall 0.35 m to the left
+  ReactiveAvoidance thesis;
+  (void)thesis.filter(wall_beside, kCruise, 0.1);
+  EXPECT_EQ(thesis.last_action(), AvoidanceAction::kTurnAwayNear);
+
+  ReactiveAvoidanceOptions o;
+  o.path_half_width_m = 0.3;
+  o.sensor_radius_m = 0.2;
+  ReactiveAvoidance ours(o);
+  EXPECT_EQ(ours.filter(wall_beside, kCruise, 0.1).v_m_per_s, kCruise.v_m_per_s);
+  EXPECT_EQ(ours.last_action(), AvoidanceAction::kPassThrough);
+
+  ObstacleSensing box_ahead = wall_beside;
+  box_ahead.sonar.push_back({-0.1745, 0.7});  // 0.9 m from the centre, 0.16 m right of its line
+  const VelocityCommand c = ours.filter(box_ahead, kCruise, 0.1);
+  EXPECT_EQ(ours.last_action(), AvoidanceAction::kTurnAwayFar);
+  EXPECT_DOUBLE_EQ(c.omega_rad_per_s, 0.3);  // away from the right
+  o.path_half_width_m = -1.0;
+  EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("path_half_width_m"));
+}
+
+// Ours: the strip follows the arc the navigation command drives, and turning in place sweeps
+// nothing (a disc can always turn).
+TEST(ReactiveAvoidance, TheStripFollowsTheCommandedArc) {
+  ReactiveAvoidanceOptions o;
+  o.path_half_width_m = 0.3;
+  ObstacleSensing ahead;
+  ahead.sonar = {{0.0, 0.5}};  // dead ahead
+  ReactiveAvoidance a(o);
+  (void)a.filter(ahead, {0.0, 0.5}, 0.1);
+  EXPECT_EQ(a.last_action(), AvoidanceAction::kPassThrough);
+  // 0.58 m ahead and 0.445 m to the left: off a straight strip, on a left turn of radius 0.6 m
+  // (75 degrees along it).
+  ObstacleSensing left;
+  left.sonar = {{std::atan2(0.445, 0.58), std::hypot(0.58, 0.445)}};
+  (void)a.filter(left, {0.3, 0.0}, 0.1);
+  EXPECT_EQ(a.last_action(), AvoidanceAction::kPassThrough);
+  (void)a.filter(left, {0.3, 0.5}, 0.1);
+  EXPECT_EQ(a.last_action(), AvoidanceAction::kTurnAwayFar);
+}
+
+// Ours: after a turn away the robot goes straight on, then may not turn back towards the obstacle
+// while it is still beside it.
+TEST(ReactiveAvoidance, AfterATurnAwayTheRobotGoesOnPastTheObstacleBeforeTurningBack) {
+  ReactiveAvoidanceOptions o;
+  o.path_half_width_m = 0.35;
+  o.sensor_radius_m = 0.2;
+  o.straight_after_turn_s = 1.0;
+  ReactiveAvoidance a(o);
+  ObstacleSensing box_ahead_right;
+  box_ahead_right.sonar = {{-0.17, 0.6}};
+  EXPECT_DOUBLE_EQ(a.filter(box_ahead_right, kCruise, 0.1).omega_rad_per_s, 0.3);  // turn left
+  const VelocityCommand back_right{0.2, -0.5};  // the navigation turns back towards the box
+  ObstacleSensing clear;
+  for (int k = 0; k < 9; ++k) {  // 1 s at 0.1 s a call (the 10th call ends it)
+    const VelocityCommand c = a.filter(clear, back_right, 0.1);
+    EXPECT_EQ(a.last_action(), AvoidanceAction::kStraightOn) << k;
+    EXPECT_DOUBLE_EQ(c.v_m_per_s, 0.1);
+    EXPECT_DOUBLE_EQ(c.omega_rad_per_s, 0.0);
+  }
+  ObstacleSensing beside_right;
+  beside_right.sonar = {{-1.5708, 0.2}};
+  (void)a.filter(beside_right, back_right, 0.1);
+  EXPECT_EQ(a.last_action(), AvoidanceAction::kStraightOn);                 // still beside: not yet
+  EXPECT_EQ(a.filter(beside_right, {0.2, 0.4}, 0.1).omega_rad_per_s, 0.4);  // away: allowed
+  EXPECT_EQ(a.filter(clear, back_right, 0.1).omega_rad_per_s, -0.5);        // past it: turn back
+  EXPECT_EQ(a.last_action(), AvoidanceAction::kPassThrough);
+}
+
 TEST(ReactiveAvoidance, BumperHitBacksOffAndTurnsHarderTheMoreCentralTheHit) {
   ReactiveAvoidance a;
   ObstacleSensing s;

@@ -54,6 +54,25 @@ struct ReactiveAvoidanceOptions {
   /// Only obstacles within this angle of straight ahead make the robot turn (the P3DX's front
   /// sonars cover +-90 degrees). Ours.
   double field_of_view_half_rad = 1.5707963267948966;
+  /// Ours; 0 keeps the thesis' rule. When > 0 a reading makes the robot turn only if the obstacle
+  /// lies in the path the navigation command would sweep: within this distance of the arc it
+  /// drives, ahead along it by up to a quarter turn (a command that turns in place sweeps
+  /// nothing); and a turn away keeps its side until the way is clear. Under the thesis' rule every
+  /// wall within 1 m at up to 90 degrees turns the robot away, so it cannot follow a corridor
+  /// narrower than 2 m or turn a corner (docs/fusion-navigation.md, "The obstacle course").
+  double path_half_width_m = 0.0;
+  /// Where range readings start: this far from the robot's centre along their bearing (a P3DX's
+  /// sonars sit on its edge). Only the strip test uses it.
+  double sensor_radius_m = 0.0;
+  /// Ours; 0 keeps the thesis' rule (the navigation command passes through as soon as nothing is
+  /// in range). When > 0, once a turn away has cleared the way the robot drives straight on at
+  /// avoid_speed_m_per_s for this long, and then, while a sonar on the obstacle's side (20 to 100
+  /// degrees) reads within beside_range_m, the navigation may not turn it back towards that side,
+  /// for at most bypass_limit_s. Without it a navigation that turns back to its path meets the
+  /// obstacle again at once, and the two turn the robot to and fro in front of it.
+  double straight_after_turn_s = 0.0;
+  double beside_range_m = 0.4;
+  double bypass_limit_s = 10.0;
   double avoid_speed_m_per_s = 0.1;    // ours: forward speed cap while turning away (far)
   double backoff_speed_m_per_s = 0.1;  // ours: reverse speed after a front bumper hit
   double backoff_duration_s = 1.0;     // ours: keep backing off this long after release
@@ -68,6 +87,7 @@ enum class AvoidanceAction {
   kTurnAwayFar,   // obstacle within sonar/depth range: turn at the far rate, slow forward
   kTurnAwayNear,  // obstacle within near_range_m: turn in place at the near rate
   kBumperEscape,  // a bumper is (or was recently) pressed: back off and turn
+  kStraightOn,    // after a turn away: straight on past the obstacle (straight_after_turn_s)
 };
 
 [[nodiscard]] const char* to_string(AvoidanceAction a);
@@ -90,6 +110,11 @@ class ReactiveAvoidance {
   AvoidanceAction last_action_ = AvoidanceAction::kPassThrough;
   VelocityCommand escape_;  // the command of the last bumper hit
   double escape_left_s_ = 0.0;
+  [[nodiscard]] bool obstacle_beside(const std::vector<ObstacleRange>& sonar) const;
+
+  double straight_left_s_ = 0.0;
+  double bypass_left_s_ = 0.0;
+  double turn_sign_ = 1.0;  // +1 turning left (counter-clockwise) away from the obstacle
 };
 
 }  // namespace tessera

@@ -71,6 +71,12 @@ slam-table-manhattan: cli
 depth-icp-table: build
 	build/dev/bench/fusion/depth_icp_table 10
 
+# Issue 18 item 9: the obstacle course in four floor plans, ours against the thesis' navigation,
+# with and without boxes on the route (docs/fusion-navigation.md).
+.PHONY: obstacle-course
+obstacle-course: cli
+	python3 scripts/obstacle_course_table.py --images docs/images
+
 # Issue 16's localization figures on the Intel log: map 0-600 s, localize 600-1,088 s (relations,
 # real-time factor), relocalize from 50 starts with no initial pose, 10 kidnappings
 # (docs/localization.md).

@@ -12,6 +12,10 @@ start per seed, scored against its ground truth) and writes the mapping table.
 usage: scripts/fusion_table.py [--tessera build/dev/apps/tessera/tessera] [--seeds 1 2 3]
                                [--runs 1] [--features orb sift akaze] [--out out/fusion-table]
                                [--doc docs/fusion-teach-and-repeat.md] [--mapping]
+                               [--appendix] [--drop-frames P] [--photos N]
+--appendix prints the thesis' Appendix B and C figures of the runs instead (docs/fusion-claims.md);
+--drop-frames and --photos test the thesis' claims that the map needs no continuous stream of
+images and is not misled by repeated landmarks (issue 18 item 11).
 """
 import argparse
 import json
@@ -41,6 +45,11 @@ BARS = ("Bars (issue 5): goal cell reached on every run; final error <= 0.1 m; p
         "than odometry alone; image-node search >= 90 %.")
 
 
+# Extra arguments for every run (--drop-frames) and the poster photo folder (--photos N).
+EXTRA = []
+TEXTURES = [PHOTOS]
+
+
 def run(tessera, out_root, world, features, seed, runs, reuse, mapping=False):
     label, args = world
     out = out_root / f"{label.split()[0].lower()}_{features}_{seed}"
@@ -51,7 +60,8 @@ def run(tessera, out_root, world, features, seed, runs, reuse, mapping=False):
         return None
     mode = [] if mapping else ["--teach-and-repeat", "--runs", str(runs)]
     cmd = [tessera, "fusion", "--quiet"] + mode + ["--features", features, "--seed", str(seed),
-                                                   "--textures", str(PHOTOS), "--out", str(out)] + args
+                                                   "--textures", str(TEXTURES[0]),
+                                                   "--out", str(out)] + args + EXTRA
     proc = subprocess.run(cmd, capture_output=True, text=True)
     if proc.returncode != 0:
         sys.exit(f"{' '.join(cmd)}: exit {proc.returncode}: {proc.stderr.strip()}")
@@ -81,6 +91,50 @@ def mapping_table(args, out_root):
     return "\n".join(lines) + "\n"
 
 
+def appendix_table(args, out_root):
+    """Per run, the thesis' Appendix B (image nodes, image nodes in the goal cell, cells, goal cell
+    id) and Appendix C (the image-node search's first transform estimate against the odometry
+    error when it began), with the per-feature means and standard deviations as the thesis gives
+    them."""
+    lines = ["| Features | World | Seed | Route (m) | Taught + driven (m) | Image nodes | "
+             "In goal cell | Cells | Goal cell id | Search: first offset (m) | "
+             "Odometry error at search (m) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    summary = []
+    for features in args.features:
+        cols = {"nodes": [], "in_goal": [], "cells": [], "goal_id": []}
+        for world in WORLDS:
+            for seed in args.seeds:
+                reuse = "only" if args.reuse_only else args.reuse
+                report = run(args.tessera, out_root, world, features, seed, 1, reuse)
+                if report is None:
+                    continue
+                r = report["teach_and_repeat"]["runs"][0]
+                goal_search = r["searches"][-1]
+                driven = 2 * r["taught_route_length_m"] + r["navigation_path_m"]
+                cols["nodes"].append(r["image_nodes"])
+                cols["in_goal"].append(r["goal_cell_image_nodes"])
+                cols["cells"].append(r["cells"])
+                cols["goal_id"].append(r["goal_cell"])
+                lines.append(
+                    f"| {features.upper()} | {world[0]} | {seed} | "
+                    f"{r['taught_route_length_m']:.2f} | {driven:.1f} | {r['image_nodes']} | "
+                    f"{r['goal_cell_image_nodes']} | {r['cells']} | {r['goal_cell']} | "
+                    f"{goal_search['first_offset_m']:.3f} | {goal_search['odometry_error_m']:.3f} |")
+        def stats(v):
+            n = len(v)
+            if n == 0:
+                return "-"
+            mean = sum(v) / n
+            sd = (sum((x - mean) ** 2 for x in v) / (n - 1)) ** 0.5 if n > 1 else 0.0
+            return f"{mean:.1f} +- {sd:.1f}"
+        summary.append(f"| {features.upper()} | {stats(cols['nodes'])} | {stats(cols['in_goal'])} | "
+                       f"{stats(cols['cells'])} | {stats(cols['goal_id'])} |")
+    lines += ["", "| Features | Image nodes | In goal cell | Cells | Goal cell id |",
+              "|---|---|---|---|---|"] + summary
+    return "\n".join(lines) + "\n"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--tessera", default=str(ROOT / "build/dev/apps/tessera/tessera"))
@@ -95,8 +149,30 @@ def main():
                     help="as --reuse, and skip the runs that are not there (no new runs)")
     ap.add_argument("--mapping", action="store_true",
                     help="tessera fusion --world mapping runs instead of teach-and-repeat")
+    ap.add_argument("--appendix", action="store_true",
+                    help="the thesis' Appendix B and C figures of the teach-and-repeat runs instead")
+    ap.add_argument("--drop-frames", type=float, default=0.0,
+                    help="lose each frame the SLAM asks for with this probability")
+    ap.add_argument("--photos", type=int, default=0,
+                    help="hang only the first N photos (repeated posters everywhere)")
     args = ap.parse_args()
     out_root = pathlib.Path(args.out)
+    if args.drop_frames > 0.0:
+        EXTRA.extend(["--drop-frames", str(args.drop_frames)])
+    if args.photos > 0:  # a folder of links to the first N photos, beside the runs
+        few = out_root / f"photos_{args.photos}"
+        few.mkdir(parents=True, exist_ok=True)
+        for photo in sorted(p for p in PHOTOS.iterdir() if p.is_file())[:args.photos]:
+            link = few / photo.name
+            if not link.exists():
+                link.symlink_to(photo)
+        TEXTURES[0] = few
+    if args.appendix:
+        text = appendix_table(args, out_root)
+        print(text, end="")
+        if args.doc:
+            pathlib.Path(args.doc).write_text(text)
+        return
     if args.mapping:
         text = mapping_table(args, out_root)
         print(text, end="")

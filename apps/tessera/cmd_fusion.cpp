@@ -79,6 +79,25 @@ FusionCommand::FusionCommand(CLI::App& app) {
                    "--world: also write the mapping run as a TUM RGB-D sequence folder (rgb/, "
                    "depth/, groundtruth.txt, odometry.txt, neck.txt) for --sequence");
   add_output_stream_options(*sub_, options_.streams);
+  sub_->add_option("--obstacles", options_.obstacles,
+                   "--teach-and-repeat: put this many boxes on the taught route before the "
+                   "repeat; the robot gets a P3DX body, sonars and bumpers (thesis chapter 5)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 20));
+  sub_->add_option("--drop-frames", options_.drop_frames,
+                   "--teach-and-repeat: lose each frame the SLAM asks for with this probability")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 0.95));
+  sub_->add_option("--navigation", options_.navigation,
+                   "--teach-and-repeat: ours (cell polyline, pure pursuit) or thesis (re-decide "
+                   "the best neighbour at every cell border)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"ours", "thesis"}));
+  sub_->add_option("--avoidance", options_.avoidance,
+                   "--obstacles: strip (ours: only what lies ahead in the robot's width), thesis "
+                   "(everything within 1 m at up to 90 degrees) or off")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"strip", "thesis", "off"}));
   sub_->add_option("--route-length-m", options_.route_length_m,
                    "Route length wanted when the goal is chosen (the thesis' route: 9.7 m)")
       ->capture_default_str()

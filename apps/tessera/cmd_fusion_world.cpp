@@ -8,17 +8,17 @@
 #include <optional>
 
 #include "commands.hpp"
-#include "recording.hpp"
-#include "tessera/record/fusion_recording.hpp"
-#include "tessera/io/data_dir.hpp"
-#include "tessera/report/core_report.hpp"
 #include "fusion_report.hpp"
 #include "fusion_simulated_setup.hpp"
+#include "recording.hpp"
 #include "tessera/fusion/replay.hpp"
+#include "tessera/io/data_dir.hpp"
 #include "tessera/io/tum_rgbd_sequence.hpp"
+#include "tessera/mission/teach_and_repeat_setup.hpp"
+#include "tessera/record/fusion_recording.hpp"
 #include "tessera/render/simulated_rgbd_sequence.hpp"
 #include "tessera/render/wall_textures.hpp"
-#include "tessera/mission/teach_and_repeat_setup.hpp"
+#include "tessera/report/core_report.hpp"
 #include "tessera/sim/rgbd_run.hpp"
 
 namespace tessera::cli {
@@ -40,7 +40,11 @@ nlohmann::json FusionCommand::simulated_options_json(const SimulatedSetup& setup
           {"firing_field_radius_m", options.slam.map.firing_field_radius_m},
           {"capture_neck_angles_rad", options.capture_neck_angles_rad},
           {"odometry", "thesis_fusion_odometry (Table 5.4)"},
-          {"route_length_m", options_.route_length_m}};
+          {"route_length_m", options_.route_length_m},
+          {"navigation", options_.navigation},
+          {"drop_frames", options_.drop_frames},
+          {"obstacles", options_.obstacles},
+          {"avoidance", options_.obstacles > 0 ? options_.avoidance : "none"}};
 }
 
 nlohmann::json FusionCommand::world_json(const World& world) const {
@@ -76,6 +80,18 @@ Result<FusionCommand::SimulatedSetup> FusionCommand::load_simulated_setup() cons
   TeachAndRepeatOptions options;
   options.slam.node.feature_type = *type;
   options.slam.seed = options_.seed;
+  if (options_.navigation == "thesis") options.navigation = RepeatNavigation::kThesisGreedy;
+  options.frame_drop_probability = options_.drop_frames;
+  if (options_.obstacles > 0) {
+    ObstacleCourseOptions course;
+    course.obstacles = options_.obstacles;
+    course.avoid = options_.avoidance != "off";
+    if (options_.avoidance == "thesis") {  // as written: every echo within range counts
+      course.avoidance = ReactiveAvoidanceOptions{};
+      course.only_new_obstacles = false;
+    }
+    options.obstacle_course = course;
+  }
   Result<TeachAndRepeatScenario> scenario =
       set_up_teach_and_repeat(*world, *textures, start_xy, goal_xy, options.clearance_m,
                               options_.route_length_m, options_.seed);

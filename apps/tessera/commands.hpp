@@ -209,7 +209,7 @@ class SlamCommand : public Command {
   std::optional<double> cell_m_;  // default: 0.05 m for a log, the world's cell for a simulated run
   bool no_loop_closure_ = false;
   bool manhattan_ = false;  // Manhattan heading priors (issue 18 item 7)
-  OutputStreams streams_;  // --record, --serve
+  OutputStreams streams_;   // --record, --serve
   bool quiet_ = false;
   // --ros: the live SLAM node on Cyclone DDS (cmd_slam_ros.cpp).
   void add_ros_options();
@@ -329,8 +329,14 @@ class FusionCommand : public Command {
         textures;                      // default: <data>/rgbd/rtabmap_loop_samples/images
     std::optional<std::string> start;  // "x,y" metres; default: chosen by --seed
     std::optional<std::string> goal;
-    double route_length_m = 9.7;                         // the thesis' route: 7.4 m + 2.3 m
-    double duration_s = 600.0;                           // --world: the mapping run's time limit
+    double route_length_m = 9.7;  // the thesis' route: 7.4 m + 2.3 m
+    // --teach-and-repeat: the obstacle course (boxes on the route, P3DX body, avoidance) and the
+    // repeat stage's navigation.
+    int obstacles = 0;
+    double drop_frames = 0.0;         // the probability that a frame the SLAM asks for is lost
+    std::string navigation = "ours";  // ours (polyline + pure pursuit) or thesis (greedy)
+    std::string avoidance = "strip";  // strip (ours), thesis or off
+    double duration_s = 600.0;        // --world: the mapping run's time limit
     std::optional<std::filesystem::path> save_sequence;  // --world: the run as a TUM folder
     OutputStreams streams;                               // --world, --sequence: --record, --serve
     // --world: the neck sweeps while the robot drives, fast enough that a firing-field visit

@@ -60,7 +60,9 @@ nlohmann::json run_json(const TeachAndRepeatRun& r) {
                         {"captures", s.captures},
                         {"reason", s.last_reason},
                         {"offset_m", s.offset_m},
-                        {"true_offset_m", s.true_offset_m}});
+                        {"true_offset_m", s.true_offset_m},
+                        {"first_offset_m", s.first_offset_m},
+                        {"odometry_error_m", s.odometry_error_m}});
   }
   nlohmann::json row = {{"seed", r.seed},
                         {"start", pose_json(r.start)},
@@ -77,6 +79,8 @@ nlohmann::json run_json(const TeachAndRepeatRun& r) {
                         {"navigation_path_m", r.navigation_path_m},
                         {"shortest_cell_path_m", r.shortest_cell_path_m},
                         {"path_ratio", r.path_ratio},
+                        {"navigation_time_s", r.navigation_time_s},
+                        {"heading_reversals", r.heading_reversals},
                         {"odometry_error_at_goal_m", r.odometry_error_at_goal_m},
                         {"estimate_error_at_goal_m", r.estimate_error_at_goal_m},
                         {"ate_corrected_m", r.ate_corrected_m},
@@ -86,11 +90,22 @@ nlohmann::json run_json(const TeachAndRepeatRun& r) {
                         {"search_successes", r.search_successes},
                         {"searches", searches},
                         {"cells", r.cells},
+                        {"goal_cell", r.goal_cell},
+                        {"goal_cell_image_nodes", r.goal_cell_image_nodes},
                         {"image_nodes", r.image_nodes},
                         {"pose_nodes", r.pose_nodes},
                         {"frames", r.slam.frames},
+                        {"frames_dropped", r.frames_dropped},
                         {"simulated_s", r.duration_s}};
   row.update(statistics_json(r.slam));
+  if (!r.obstacles_m.empty()) {
+    nlohmann::json boxes = nlohmann::json::array();
+    for (const auto& [lo, hi] : r.obstacles_m) boxes.push_back({lo.x, lo.y, hi.x, hi.y});
+    row["obstacle_course"] = {{"boxes_m", boxes},
+                              {"avoidance_updates", r.avoidance_updates},
+                              {"bumper_hits", r.bumper_hits},
+                              {"blocked_steps", r.blocked_steps}};
+  }
   return row;
 }
 
@@ -116,6 +131,7 @@ HexMapPicture picture_of(const TeachAndRepeatResult& result, const World& world)
   p.true_path_m = result.run.true_path_m;
   p.start_cell = static_cast<std::ptrdiff_t>(result.run.start_cell);
   p.goal_cell = static_cast<std::ptrdiff_t>(result.run.goal_cell);
+  p.obstacles_m = result.run.obstacles_m;
   return p;
 }
 

@@ -1,7 +1,9 @@
 #include "tessera/mission/teach_and_repeat.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <unordered_map>
@@ -9,7 +11,9 @@
 
 #include "tessera/core/angle.hpp"
 #include "tessera/eval/drift_correction.hpp"
+#include "tessera/eval/heading_reversals.hpp"
 #include "tessera/nav/cell_polyline.hpp"
+#include "tessera/nav/greedy_cell_controller.hpp"
 #include "tessera/nav/wavefront.hpp"
 #include "tessera/sim/differential_drive.hpp"
 
@@ -32,6 +36,51 @@ std::pair<int, int> goal_view_score(const fusion::NodeCreation& view) {
   }
   return {static_cast<int>(std::count(covered.begin(), covered.end(), 1)),
           view.features_with_depth};
+}
+
+// Distance from p to the polyline `line` (infinity when it is empty).
+double distance_to_polyline(Vec2 p, const std::vector<Vec2>& line) {
+  double best = line.empty() ? std::numeric_limits<double>::infinity() : (p - line[0]).norm();
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const Vec2 a = line[i - 1], d = line[i] - a;
+    const double len2 = d.x * d.x + d.y * d.y;
+    const double t =
+        len2 > 0.0 ? std::clamp(((p - a).x * d.x + (p - a).y * d.y) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (p - (a + d * t)).norm());
+  }
+  return best;
+}
+
+// The sonar echoes that lie within reach_m of the taught path (map frame), seen from the robot's
+// estimate: what stands now where the robot drove while teaching. Others read "no echo".
+ObstacleSensing new_on_route(ObstacleSensing sensing, const Pose2& T_map_robot,
+                             const std::vector<Vec2>& taught_m, double sensor_radius_m,
+                             double reach_m) {
+  for (ObstacleRange& r : sensing.sonar) {
+    if (!std::isfinite(r.range_m)) continue;
+    const double along = sensor_radius_m + r.range_m;
+    const Vec2 p =
+        T_map_robot * Vec2{along * std::cos(r.bearing_rad), along * std::sin(r.bearing_rad)};
+    if (distance_to_polyline(p, taught_m) > reach_m) {
+      r.range_m = std::numeric_limits<double>::infinity();
+    }
+  }
+  return sensing;
+}
+
+// Where a replanned path starts: of the cells within two cell spacings of the robot, the one
+// nearest the goal by the wavefront (the nearest cell alone when none is that close). Starting
+// from the nearest cell would send a robot that an obstacle has pushed beside its path back to
+// the cell it has just passed.
+std::size_t replan_start_cell(const CellGraph& graph, const WavefrontField& field, Vec2 p_m,
+                              double cell_radius_m) {
+  std::size_t best = graph.nearest(p_m);
+  for (std::size_t i = 0; i < graph.size(); ++i) {
+    if ((graph.centres_m[i] - p_m).norm() > 2.0 * cell_radius_m) continue;
+    if (field.value[i] == kNoWavefrontValue) continue;
+    if (field.value[best] == kNoWavefrontValue || field.value[i] > field.value[best]) best = i;
+  }
+  return best;
 }
 
 }  // namespace
@@ -58,6 +107,26 @@ std::optional<std::string> validate(const TeachAndRepeatOptions& o) {
   if (!positive(o.search_tolerance_m)) return std::string("search_tolerance_m must be > 0");
   if (o.max_search_drives < 1) return std::string("max_search_drives must be >= 1");
   if (!positive(o.max_drive_s)) return std::string("max_drive_s must be > 0");
+  if (!(o.frame_drop_probability >= 0.0 && o.frame_drop_probability < 1.0)) {
+    return std::string("frame_drop_probability must be within [0, 1)");
+  }
+  if (o.obstacle_course) {
+    const ObstacleCourseOptions& c = *o.obstacle_course;
+    if (auto e = validate(c.body)) return "obstacle_course.body: " + *e;
+    if (auto e = validate(c.avoidance)) return "obstacle_course.avoidance: " + *e;
+    if (c.body.body_radius_m >= o.clearance_m) {
+      return std::string("obstacle_course.body.body_radius_m must be < clearance_m");
+    }
+    if (c.obstacles < 0) return std::string("obstacle_course.obstacles must be >= 0");
+    if (!positive(c.obstacle_side_m))
+      return std::string("obstacle_course.obstacle_side_m must be > 0");
+    if (!(std::isfinite(c.min_end_distance_m) && c.min_end_distance_m >= 0.0)) {
+      return std::string("obstacle_course.min_end_distance_m must be >= 0");
+    }
+    if (!(std::isfinite(c.free_around_m) && c.free_around_m >= 0.0)) {
+      return std::string("obstacle_course.free_around_m must be >= 0");
+    }
+  }
   return std::nullopt;
 }
 
@@ -71,7 +140,10 @@ class TeachAndRepeatSimulation {
         robot_(start, o.odometry, Rng(seed).fork(1)),
         frame_rng_(Rng(seed).fork(2)),
         slam_(o.slam),
-        neck_(o.neck_pan_rad) {
+        neck_(o.neck_pan_rad),
+        sonar_rng_(Rng(seed).fork(4)),
+        drop_rng_(Rng(seed).fork(5)) {
+    if (o.obstacle_course) body_world_ = &camera.world();
     truth_.push_back({0.0, start});
     update();
   }
@@ -105,6 +177,11 @@ class TeachAndRepeatSimulation {
     if (u.wants_frame) {
       const double driving_neck = neck_;
       for (double angle : o_.capture_neck_angles_rad) {
+        if (o_.frame_drop_probability > 0.0 &&
+            drop_rng_.uniform(0.0, 1.0) < o_.frame_drop_probability) {
+          ++frames_dropped;
+          continue;
+        }
         neck_ = angle;
         const fusion::FusionCapture c = slam_.add_frame(render(), angle);
         if (c.optimised) ++corrections;
@@ -119,7 +196,12 @@ class TeachAndRepeatSimulation {
   /// Drives one update period with the command; returns false when the time limit is hit.
   bool drive(double v, double w) {
     for (int k = 0; k < o_.steps_per_update; ++k) {
-      robot_.step(v, w, o_.control_period_s);
+      if (body_world_ && !body_can_move(v, w)) {
+        robot_.step(0.0, w, o_.control_period_s);  // the wheels stall; a disc can still turn
+        ++blocked_steps;
+      } else {
+        robot_.step(v, w, o_.control_period_s);
+      }
       ++steps_;
       t_s_ = static_cast<double>(steps_) * o_.control_period_s;
     }
@@ -129,6 +211,16 @@ class TeachAndRepeatSimulation {
   }
 
   void start_drive() { drive_start_s_ = t_s_; }
+
+  /// The world the body meets (obstacle course only): the camera's while teaching, the one with
+  /// the boxes while repeating. Must outlive this object.
+  void set_body_world(const World* world) { body_world_ = world; }
+  /// The sonars and bumpers now. Precondition: an obstacle course.
+  [[nodiscard]] ObstacleSensing sense() {
+    return sense_p3dx(*body_world_, robot_.true_pose(), o_.obstacle_course->body, sonar_rng_);
+  }
+  int blocked_steps = 0;   // control steps a contact stopped the body
+  int frames_dropped = 0;  // frames lost (frame_drop_probability)
 
   /// Turn in place to `heading_rad` on `pose_of()`, then drive straight to `target` with a
   /// heading correction, braking to stop on it. The operator's (teach) or the navigation's
@@ -181,6 +273,15 @@ class TeachAndRepeatSimulation {
   }
 
  private:
+  // Whether the body can drive (v, w) for one control period without going deeper into a contact.
+  bool body_can_move(double v, double w) const {
+    const Pose2& from = robot_.true_pose();
+    const Pose2 to = from * arc_motion(v, w, o_.control_period_s);
+    const Pose2 allowed =
+        blocked_motion(*body_world_, from, to, o_.obstacle_course->body.body_radius_m);
+    return allowed.x == to.x && allowed.y == to.y;
+  }
+
   const RgbdCamera& camera_;
   TeachAndRepeatOptions o_;
   DifferentialDriveRobot robot_;
@@ -191,7 +292,47 @@ class TeachAndRepeatSimulation {
   double t_s_ = 0.0;
   double drive_start_s_ = 0.0;
   std::vector<StampedPose2> truth_;
+  const World* body_world_ = nullptr;  // null: no body (no obstacle course)
+  Rng sonar_rng_;
+  Rng drop_rng_;
 };
+
+namespace {
+
+// The obstacle course's state in the navigation loop.
+struct CourseLoop {
+  std::optional<ReactiveAvoidance> avoidance;  // empty: the robot drives blind
+  std::vector<Vec2> taught_m;                  // the taught path (only_new_obstacles)
+  bool bumped = false;                         // a bumper was pressed at the last update
+};
+
+// One navigation update on the obstacle course: counts bumper hits and lets the avoidance filter
+// the navigation's command (thesis 4.3.4), hearing only what is new on the taught route when
+// only_new_obstacles is set (decision 0028).
+VelocityCommand on_course(TeachAndRepeatSimulation& x, const ObstacleCourseOptions& course,
+                          CourseLoop& loop, VelocityCommand cmd, double period_s,
+                          TeachAndRepeatRun& run) {
+  ObstacleSensing sensing = x.sense();
+  const auto pressed = [](const std::array<bool, 5>& ring) {
+    return std::find(ring.begin(), ring.end(), true) != ring.end();
+  };
+  const bool bump = pressed(sensing.bumpers.front) || pressed(sensing.bumpers.rear);
+  if (bump && !loop.bumped) ++run.bumper_hits;
+  loop.bumped = bump;
+  if (!loop.avoidance) return cmd;
+  if (course.only_new_obstacles) {
+    sensing = new_on_route(std::move(sensing), x.slam().estimate(), loop.taught_m,
+                           course.body.sonar_radius_m, course.body.body_radius_m);
+  }
+  cmd = loop.avoidance->filter(sensing, cmd, period_s);
+  const AvoidanceAction a = loop.avoidance->last_action();
+  if (a == AvoidanceAction::kTurnAwayFar || a == AvoidanceAction::kTurnAwayNear) {
+    ++run.avoidance_updates;
+  }
+  return cmd;
+}
+
+}  // namespace
 
 const char* describe(TeachAndRepeatStage stage) {
   switch (stage) {
@@ -220,14 +361,28 @@ Result<TeachAndRepeat> TeachAndRepeat::create(const RgbdCamera& camera,
   Result<std::vector<Vec2>> route =
       plan_route(camera.world(), {start.x, start.y}, goal_m, options.clearance_m);
   if (!route) return route.error();
-  return TeachAndRepeat(camera, options, std::move(*route), start, goal_m, seed);
+  std::optional<RouteObstacles> obstacles;
+  if (const auto& course = options.obstacle_course; course && course->obstacles > 0) {
+    Rng rng = Rng(seed).fork(3);
+    Result<RouteObstacles> placed = place_route_obstacles(
+        camera.world(), *route, course->obstacles, course->obstacle_side_m,
+        course->min_end_distance_m, options.clearance_m, course->free_around_m, rng);
+    if (!placed) return placed.error();
+    obstacles = std::move(*placed);
+  }
+  return TeachAndRepeat(camera, options, std::move(*route), std::move(obstacles), start, goal_m,
+                        seed);
 }
 
 TeachAndRepeat::TeachAndRepeat(const RgbdCamera& camera, const TeachAndRepeatOptions& options,
-                               std::vector<Vec2> route, const Pose2& start, Vec2 goal_m,
-                               std::uint64_t seed)
+                               std::vector<Vec2> route, std::optional<RouteObstacles> obstacles,
+                               const Pose2& start, Vec2 goal_m, std::uint64_t seed)
     : options_(options),
       sim_(std::make_unique<TeachAndRepeatSimulation>(camera, options, start, seed)) {
+  if (obstacles) {
+    run_.obstacles_m = std::move(obstacles->boxes_m);
+    repeat_world_ = std::make_unique<World>(std::move(obstacles->world));
+  }
   run_.seed = seed;
   run_.start = start;
   run_.goal_m = goal_m;
@@ -331,6 +486,7 @@ Status TeachAndRepeat::teach_back() {
   }
   if (Status s = x.turn_to(run_.start.theta, truth); !s) return s;
   run_.slam_after_teach = x.slam().statistics();
+  teach_graph_nodes_ = x.slam().graph_nodes();
   return Ok{};
 }
 
@@ -345,6 +501,7 @@ Status TeachAndRepeat::search(std::size_t node_id) {
   bool confirmed = false;
   TeachAndRepeatRun::Search record;
   record.node = node_id;
+  record.odometry_error_m = std::hypot(x.odometry().x - x.truth().x, x.odometry().y - x.truth().y);
   for (int drive = 0; drive < options_.max_search_drives; ++drive) {
     const fusion::StoredImageNode& node = slam.image_nodes()[node_id];
     const Pose2 target = node.node.placement.T_map_robot;
@@ -358,8 +515,9 @@ Status TeachAndRepeat::search(std::size_t node_id) {
     ++record.captures;
     record.last_reason = c.reason;
     if (!c.confirmed) continue;
-    confirmed = true;
     record.offset_m = std::hypot(c.T_node_robot.x, c.T_node_robot.y);
+    if (!confirmed) record.first_offset_m = record.offset_m;
+    confirmed = true;
     if (record.offset_m <= options_.search_tolerance_m) break;
   }
   if (confirmed) ++run_.search_successes;
@@ -376,6 +534,7 @@ Status TeachAndRepeat::confirm_start_node() {
   TeachAndRepeatSimulation& x = *sim_;
   const fusion::FusionSlam& slam = x.slam();
   x.estimate_path = &x.repeated_path;
+  if (repeat_world_) x.set_body_world(repeat_world_.get());  // the boxes are on the route now
   std::size_t best = 0;
   int best_features = -1;
   for (std::size_t id : slam.nodes_in_cell(slam.map().current_cell())) {
@@ -391,26 +550,44 @@ Status TeachAndRepeat::confirm_start_node() {
 
 // Step 8: navigate to the goal cell: the wavefront over the learned cells as written (thesis
 // 4.3.5), the non-zigzag polyline (6.2 item 3) and pure pursuit on the estimate, replanned from
-// the current estimate after each correction.
+// the current estimate after each correction and when the avoidance has pushed the robot off its
+// path; or, as the baseline, the thesis' re-decision at every border (nav/greedy_cell_controller).
+// On an obstacle course the reactive avoidance (4.3.4) filters every command.
 Status TeachAndRepeat::navigate() {
   TeachAndRepeatSimulation& x = *sim_;
   const fusion::FusionSlam& slam = x.slam();
   run_.start_cell = slam.map().current_cell();
   const double path_at_start = x.path_m();
-  bool planned = false;
+  const double time_at_start = x.time_s();
+  const int blocked_at_start = x.blocked_steps;
+  const bool greedy = options_.navigation == RepeatNavigation::kThesisGreedy;
+  const double period = options_.control_period_s * options_.steps_per_update;
+  const double cell_radius_m = slam.map().options().cell_radius_m;
   std::optional<PathFollower> follower;
-  int seen_corrections = -1;
+  std::optional<GreedyCellController> thesis;
+  const std::optional<ObstacleCourseOptions>& course = options_.obstacle_course;
+  CourseLoop course_loop;
+  if (course && course->avoid) course_loop.avoidance.emplace(course->avoidance);
+  HeadingReversalCounter reversals(0.1);
+  reversals.add(x.truth().theta);
+  bool planned = false;
+  int seen_corrections = -1;  // plan at once
   CellPolylineOptions poly;
-  poly.cell_radius_m = slam.map().options().cell_radius_m;
+  poly.cell_radius_m = cell_radius_m;
   x.start_drive();
   for (;;) {
-    if (!follower || seen_corrections != x.corrections) {
+    if (seen_corrections != x.corrections) {
       seen_corrections = x.corrections;
-      const CellGraph graph = slam.map().graph(fusion::CellAdjacency::kTraversed);
+      // On an obstacle course the cells mapped going round a box join the taught ones only where
+      // the robot crossed between them: plan over the lattice neighbours that are both mapped
+      // (the clearance keeps walls out of them), from the cell ahead rather than the nearest.
+      const CellGraph graph = slam.map().graph(course ? fusion::CellAdjacency::kGeometric
+                                                      : fusion::CellAdjacency::kTraversed);
       const WavefrontField field = wavefront(graph, run_.goal_cell);
       const Pose2 p = slam.estimate();
-      const std::vector<std::size_t> cell_path =
-          wavefront_path(graph, field, graph.nearest({p.x, p.y}));
+      const std::size_t start = course ? replan_start_cell(graph, field, {p.x, p.y}, cell_radius_m)
+                                       : graph.nearest({p.x, p.y});
+      const std::vector<std::size_t> cell_path = wavefront_path(graph, field, start);
       if (cell_path.empty()) {
         return runtime_error("teach and repeat: the wavefront finds no path to the goal cell");
       }
@@ -418,16 +595,33 @@ Status TeachAndRepeat::navigate() {
         run_.shortest_cell_path_m = cell_path_length_m(graph, cell_path);
         planned = true;
       }
-      follower.emplace(
-          cell_path_polyline(graph, cell_path, {p.x, p.y}, graph.centres_m[run_.goal_cell], poly),
-          options_.follower);
+      if (course && course->only_new_obstacles) {  // the taught path as the graph places it now
+        course_loop.taught_m.clear();
+        const std::vector<StampedPose2> nodes = slam.corrected_trajectory();
+        for (std::size_t i = 0; i < std::min(teach_graph_nodes_, nodes.size()); ++i) {
+          course_loop.taught_m.push_back({nodes[i].pose.x, nodes[i].pose.y});
+        }
+      }
+      if (greedy) {
+        thesis.emplace(graph, run_.goal_cell, GreedyCellControllerOptions{options_.follower});
+      } else {
+        follower.emplace(
+            cell_path_polyline(graph, cell_path, {p.x, p.y}, graph.centres_m[run_.goal_cell], poly),
+            options_.follower);
+      }
     }
-    const VelocityCommand cmd = follower->command(slam.estimate());
-    if (follower->arrived()) break;
+    VelocityCommand cmd =
+        greedy ? thesis->command(slam.estimate()) : follower->command(slam.estimate());
+    if (greedy ? thesis->arrived() : follower->arrived()) break;
+    if (course) cmd = on_course(x, *course, course_loop, cmd, period, run_);
     if (!x.drive(cmd.v_m_per_s, cmd.omega_rad_per_s)) {
       return runtime_error("teach and repeat: navigation exceeded max_drive_s");
     }
+    reversals.add(x.truth().theta);
   }
+  run_.navigation_time_s = x.time_s() - time_at_start;
+  run_.heading_reversals = reversals.reversals();
+  run_.blocked_steps = x.blocked_steps - blocked_at_start;
   run_.navigation_path_m = x.path_m() - path_at_start;
   run_.path_ratio =
       run_.shortest_cell_path_m > 0.0 ? run_.navigation_path_m / run_.shortest_cell_path_m : 0.0;
@@ -486,10 +680,12 @@ void TeachAndRepeat::finish() {
       score ? score->odometry.trans_m.rmse : std::numeric_limits<double>::quiet_NaN();
   run_.ate_ratio = score ? score->odometry_over_slam() : 0.0;
   run_.cells = slam.map().cell_count();
+  run_.goal_cell_image_nodes = slam.nodes_in_cell(run_.goal_cell).size();
   run_.image_nodes = slam.image_nodes().size();
   run_.pose_nodes = slam.map().pose_nodes().size();
   run_.slam = slam.statistics();
   run_.duration_s = x.time_s();
+  run_.frames_dropped = x.frames_dropped;
   run_.true_path_m = x.true_path;
   run_.taught_path_m = x.taught_path;
   run_.repeated_path_m = x.repeated_path;

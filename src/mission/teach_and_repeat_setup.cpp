@@ -118,6 +118,83 @@ Result<TeachAndRepeatScenario> set_up_teach_and_repeat(
   return out;
 }
 
+namespace {
+
+// The point at arc length s_m along a polyline and the unit normal (left) of its segment there.
+std::pair<Vec2, Vec2> point_and_normal_at(const std::vector<Vec2>& line, double s_m) {
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const Vec2 d = line[i] - line[i - 1];
+    const double len = d.norm();
+    if (len <= 0.0) continue;
+    if (s_m <= len || i + 1 == line.size()) {
+      const Vec2 u = d * (1.0 / len);
+      return {line[i - 1] + u * std::min(s_m, len), Vec2{-u.y, u.x}};
+    }
+    s_m -= len;
+  }
+  return {line.front(), Vec2{0.0, 1.0}};
+}
+
+World with_box(const World& world, Vec2 lo_m, Vec2 hi_m) {
+  const GridGeometry& g = world.geometry();
+  std::vector<std::uint8_t> solid(world.solid_cells().begin(), world.solid_cells().end());
+  for (std::size_t i = 0; i < solid.size(); ++i) {
+    const Vec2 c = g.center_of(g.cell_of(i));
+    const double h = 0.5 * g.resolution_m();
+    // Cells the box overlaps with positive area.
+    if (c.x + h > lo_m.x && c.x - h < hi_m.x && c.y + h > lo_m.y && c.y - h < hi_m.y) solid[i] = 1;
+  }
+  return World(g, std::move(solid), world.name());
+}
+
+}  // namespace
+
+Result<RouteObstacles> place_route_obstacles(const World& world, const std::vector<Vec2>& route_m,
+                                             int count, double side_m, double min_end_distance_m,
+                                             double clearance_m, double free_around_m, Rng& rng) {
+  RouteObstacles out{world, {}};
+  if (count <= 0 || route_m.size() < 2) return out;
+  const double length = polyline_length_m(route_m);
+  const double usable = length - 2.0 * min_end_distance_m;
+  if (usable < count * side_m) {
+    return input_error("obstacles: the route (" + std::to_string(length) + " m) is too short for " +
+                       std::to_string(count) + " boxes at least " +
+                       std::to_string(min_end_distance_m) + " m from its ends");
+  }
+  const double share = usable / count;
+  for (int k = 0; k < count; ++k) {
+    const double lo_s = min_end_distance_m + k * share;
+    const double first = rng.uniform(lo_s, lo_s + share);
+    const double offset = rng.uniform(-0.25, 0.25) * side_m;
+    bool placed = false;
+    // Try the drawn place first, then 5 cm steps alternately after and before it, anywhere on the
+    // usable part of the route.
+    for (int step = 0; !placed && step <= static_cast<int>(2.0 * usable / 0.05) + 1; ++step) {
+      const double s = first + ((step % 2 == 1) ? 1.0 : -1.0) * 0.05 * ((step + 1) / 2);
+      if (s < min_end_distance_m || s > length - min_end_distance_m) continue;
+      const auto [p, n] = point_and_normal_at(route_m, s);
+      const Vec2 c = p + n * offset;
+      const Vec2 lo{c.x - 0.5 * side_m, c.y - 0.5 * side_m};
+      const Vec2 hi{c.x + 0.5 * side_m, c.y + 0.5 * side_m};
+      // Open floor: no wall (or earlier box) within free_around_m of the box, so the robot can
+      // pass it on either side.
+      const Vec2 margin{free_around_m, free_around_m};
+      if (out.world.any_solid_in(lo - margin, hi + margin)) continue;
+      World next = with_box(out.world, lo, hi);
+      if (!plan_route(next, route_m.front(), route_m.back(), clearance_m)) continue;
+      out.world = std::move(next);
+      out.boxes_m.emplace_back(lo, hi);
+      placed = true;
+    }
+    if (!placed) {
+      return input_error("obstacles: no place for box " + std::to_string(k + 1) +
+                         " on the route with " + std::to_string(free_around_m) +
+                         " m of open floor round it and a way past it");
+    }
+  }
+  return out;
+}
+
 Result<std::vector<Vec2>> there_and_back_waypoints(const World& world, Vec2 start_m, Vec2 goal_m,
                                                    double clearance_m) {
   const Result<std::vector<Vec2>> route = plan_route(world, start_m, goal_m, clearance_m);

@@ -87,6 +87,12 @@ Result<Frame> frame_of(const HexMapPicture& pic) {
        {&pic.image_nodes_m, &pic.taught_path_m, &pic.repeated_path_m, &pic.true_path_m}) {
     for (const Vec2 p : *points) b.add(p);
   }
+  for (const auto& [lo, hi] : pic.obstacles_m) {
+    if (!finite(lo) || !finite(hi))
+      return input_error("hex map picture: an obstacle is not finite");
+    b.add(lo);
+    b.add(hi);
+  }
   if (pic.floor_plan != nullptr && pic.floor_plan->geometry().size() > 0) {
     const GridGeometry& g = pic.floor_plan->geometry();
     b.add(g.origin());
@@ -191,6 +197,16 @@ Result<std::string> render_hex_map_svg(const HexMapPicture& pic) {
     out += "</g>\n";
   }
 
+  if (!pic.obstacles_m.empty()) {
+    out += "<g id=\"obstacles\" fill=\"" + hex(kHexObstacleColor) + "\">\n";
+    for (const auto& [lo, hi] : pic.obstacles_m) {
+      out += "<rect class=\"obstacle\" x=\"" + num(f.px(lo.x)) + "\" y=\"" + num(f.py(hi.y)) +
+             "\" width=\"" + num((hi.x - lo.x) * f.ppm) + "\" height=\"" +
+             num((hi.y - lo.y) * f.ppm) + "\"/>\n";
+    }
+    out += "</g>\n";
+  }
+
   out += "<g id=\"markers\">\n";
   if (pic.start_cell >= 0) {
     out += svg_hexagon(f, map.cell(static_cast<std::size_t>(pic.start_cell)).centre_m, d,
@@ -265,6 +281,9 @@ Result<RgbImage> render_hex_map_image(const HexMapPicture& pic) {
       cv::rectangle(image, cv::Point(pt({lo.x, hi.y})), cv::Point(pt({hi.x, lo.y})),
                     color(kHexFloorPlanColor), cv::FILLED);
     }
+  }
+  for (const auto& [lo, hi] : pic.obstacles_m) {
+    cv::rectangle(image, pt({lo.x, hi.y}), pt({hi.x, lo.y}), color(kHexObstacleColor), cv::FILLED);
   }
   if (pic.start_cell >= 0) {
     cv::fillConvexPoly(image, hexagon(map.cell(static_cast<std::size_t>(pic.start_cell)).centre_m),

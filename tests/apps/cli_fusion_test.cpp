@@ -307,6 +307,9 @@ TEST(CliFusion, WorldInputErrorsExitThreeWithOneLineAndWriteNothing) {
       {"--world " + (dir.path() / "missing.yaml").string() + photos, "missing.yaml"},
       {"--builtin office --textures " + (dir.path() / "no_photos").string(), "no_photos"},
       {"--teach-and-repeat --builtin office --start 1.0,1.0 --goal -4,-4" + photos, "route:"},
+      // Twenty boxes do not fit 1.5 m from both ends of a 4 m route.
+      {"--teach-and-repeat --builtin office --route-length-m 4 --obstacles 20" + photos,
+       "obstacles: the route"},
   };
   for (const Case& c : cases) {
     const auto out = dir.path() / "out";
@@ -315,6 +318,20 @@ TEST(CliFusion, WorldInputErrorsExitThreeWithOneLineAndWriteNothing) {
     EXPECT_THAT(run.output, HasSubstr(c.expected));
     EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
     EXPECT_FALSE(std::filesystem::exists(out)) << c.args;
+  }
+}
+
+TEST(CliFusion, UnknownNavigationOrAvoidanceIsAUsageErrorAndWritesNothing) {
+  TESSERA_REQUIRE_DATA(support::data_path(kPhotos));
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  for (const std::string bad : {"--navigation zigzag", "--avoidance sometimes"}) {
+    const support::CliRun run =
+        run_cli("fusion --teach-and-repeat --builtin office --obstacles 1 " + bad + " --textures " +
+                support::data_path(kPhotos).string() + " --out " + out.string());
+    EXPECT_EQ(run.exit_code, 2) << bad << "\n" << run.output;
+    EXPECT_THAT(run.output, HasSubstr(bad.substr(0, bad.find(' '))));
+    EXPECT_FALSE(std::filesystem::exists(out));
   }
 }
 

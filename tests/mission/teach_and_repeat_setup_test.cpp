@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -81,7 +82,6 @@ TEST(TeachAndRepeatSetup, TheScenarioTakesBothEndsOrNeitherAndTheMappingRunDrive
   EXPECT_EQ(waypoints->back(), route->front());
 }
 
-
 // A corridor of 0.1 m cells, 30 x 9, walled all round: free x in [0.1, 2.9] m, y in [0.1, 0.8] m.
 // Its middle row (y = 0.45 m) is 0.35 m from the side walls.
 World corridor() {
@@ -89,7 +89,8 @@ World corridor() {
   std::vector<std::uint8_t> solid(g.size(), 0);
   for (int y = 0; y < g.height(); ++y) {
     for (int x = 0; x < g.width(); ++x) {
-      if (x == 0 || y == 0 || x == g.width() - 1 || y == g.height() - 1) solid[g.index_of({x, y})] = 1;
+      if (x == 0 || y == 0 || x == g.width() - 1 || y == g.height() - 1)
+        solid[g.index_of({x, y})] = 1;
     }
   }
   return World(g, std::move(solid), "corridor");
@@ -157,6 +158,69 @@ TEST(TeachAndRepeatSetup, ThereAndBackDropsTheStartAndEndsOnIt) {
   const Result<std::vector<Vec2>> none = there_and_back_waypoints(corridor(), kWest, kEast, 0.4);
   ASSERT_FALSE(none);
   EXPECT_EQ(none.error().kind, ErrorKind::kInput);
+}
+
+}  // namespace
+}  // namespace tessera
+
+namespace tessera {
+namespace {
+
+// The obstacle course's boxes (issue 18 item 9).
+TEST(TeachAndRepeatSetup, BoxesSitOnTheRouteAwayFromItsEndsAndLeaveAWayRound) {
+  const World world = builtin_world("office", 0.05);
+  Rng pick(5);
+  const Result<StartAndGoal> sg = choose_start_and_goal(world, 0.3, 7.0, pick);
+  ASSERT_TRUE(sg) << sg.error().message;
+  const Result<std::vector<Vec2>> route =
+      plan_route(world, {sg->start.x, sg->start.y}, sg->goal_m, 0.3);
+  ASSERT_TRUE(route) << route.error().message;
+  Rng rng(9);
+  const Result<RouteObstacles> boxes =
+      place_route_obstacles(world, *route, 2, 0.3, 1.5, 0.3, 0.6, rng);
+  ASSERT_TRUE(boxes) << boxes.error().message;
+  ASSERT_EQ(boxes->boxes_m.size(), 2u);
+  for (const auto& [lo, hi] : boxes->boxes_m) {
+    EXPECT_NEAR(hi.x - lo.x, 0.3, 1e-12);
+    EXPECT_FALSE(world.any_solid_in(lo, hi));        // placed in free space
+    EXPECT_TRUE(boxes->world.any_solid_in(lo, hi));  // and solid in the new world
+    const Vec2 c{0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y)};
+    // On the route: its centre within a quarter side of some leg.
+    double off = 1e9;
+    for (std::size_t i = 1; i < route->size(); ++i) {
+      const Vec2 a = (*route)[i - 1], d = (*route)[i] - a;
+      const double t =
+          std::clamp(((c - a).x * d.x + (c - a).y * d.y) / (d.x * d.x + d.y * d.y), 0.0, 1.0);
+      off = std::min(off, (c - (a + d * t)).norm());
+    }
+    EXPECT_LE(off, 0.25 * 0.3 + 1e-9);
+    EXPECT_GE((c - route->front()).norm(), 1.0);  // 1.5 m along the route, at least 1 m away
+    EXPECT_GE((c - route->back()).norm(), 1.0);
+  }
+  EXPECT_TRUE(plan_route(boxes->world, route->front(), route->back(), 0.3));  // a way round
+  Rng again(9);
+  const Result<RouteObstacles> same =
+      place_route_obstacles(world, *route, 2, 0.3, 1.5, 0.3, 0.6, again);
+  ASSERT_TRUE(same);
+  EXPECT_EQ(same->boxes_m, boxes->boxes_m);
+}
+
+TEST(TeachAndRepeatSetup, ABoxWithNoWayRoundOrNoRoomOnTheRouteIsAnInputError) {
+  const World w = corridor();  // 0.7 m wide: a box in it blocks any route keeping 0.2 m
+  const Result<std::vector<Vec2>> route = plan_route(w, kWest, kEast, 0.2);
+  ASSERT_TRUE(route);
+  Rng rng(1);
+  const Result<RouteObstacles> blocked =
+      place_route_obstacles(w, *route, 1, 0.3, 0.5, 0.2, 0.4, rng);
+  ASSERT_FALSE(blocked);
+  EXPECT_EQ(blocked.error().kind, ErrorKind::kInput);
+  EXPECT_NE(blocked.error().message.find("no place for box 1"), std::string::npos)
+      << blocked.error().message;
+  const Result<RouteObstacles> short_route =
+      place_route_obstacles(w, *route, 3, 0.3, 1.0, 0.2, 0.4, rng);
+  ASSERT_FALSE(short_route);
+  EXPECT_NE(short_route.error().message.find("too short"), std::string::npos)
+      << short_route.error().message;
 }
 
 }  // namespace

@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "support/data.hpp"
@@ -90,6 +93,74 @@ TEST(TeachAndRepeat, ShortRunInTheOfficeMeetsTheBars) {
   EXPECT_EQ(run.corrected_trajectory.size(), r->slam.graph_nodes());
 }
 
+// The obstacle course (thesis chapter 5, issue 18 item 9): boxes on the taught route after the
+// teach stage, the P3DX's sonars and bumpers, the reactive avoidance in the navigation loop.
+struct CourseRun {
+  std::optional<TeachAndRepeatRun> run;
+  std::string error;
+};
+CourseRun run_course(const RgbdCamera& camera, const StartAndGoal& sg, bool avoid,
+                     RepeatNavigation navigation, double max_drive_s) {
+  TeachAndRepeatOptions options;
+  options.capture_neck_angles_rad = {-1.0, 0.0, 1.0};
+  options.navigation = navigation;
+  options.max_drive_s = max_drive_s;
+  ObstacleCourseOptions course;
+  course.avoid = avoid;
+  options.obstacle_course = course;
+  Result<TeachAndRepeatResult> r =
+      run_teach_and_repeat(camera, options, sg.start, sg.goal_m, /*seed=*/3);
+  if (!r) return {std::nullopt, r.error().message};
+  return {r->run, ""};
+}
+
+// Distance from p to the box [lo, hi] (0 inside).
+double distance_to_box(Vec2 p, const std::pair<Vec2, Vec2>& box) {
+  const double dx = std::max({box.first.x - p.x, 0.0, p.x - box.second.x});
+  const double dy = std::max({box.first.y - p.y, 0.0, p.y - box.second.y});
+  return std::hypot(dx, dy);
+}
+
+TEST(TeachAndRepeat, ObstacleCourseTheRobotGoesRoundTheBoxesAndStillReachesTheGoal) {
+  TESSERA_REQUIRE_DATA(support::data_path(kPhotos));
+  const Result<RgbdCamera> camera = office_camera(7);
+  ASSERT_TRUE(camera) << camera.error().message;
+  Rng rng(11);
+  const Result<StartAndGoal> sg =
+      choose_start_and_goal(camera->world(), 0.3, /*route_length_m=*/7.0, rng);
+  ASSERT_TRUE(sg) << sg.error().message;
+
+  {
+    const CourseRun c =
+        run_course(*camera, *sg, /*avoid=*/true, RepeatNavigation::kPolyline, 600.0);
+    ASSERT_TRUE(c.run) << c.error;
+    const TeachAndRepeatRun& run = *c.run;
+    std::cout << "obstacle course: reversals " << run.heading_reversals << ", avoidance updates "
+              << run.avoidance_updates << ", bumper hits " << run.bumper_hits << ", blocked "
+              << run.blocked_steps << ", path " << run.navigation_path_m << " m in "
+              << run.navigation_time_s << " s, final error " << run.final_error_m << " m\n";
+    ASSERT_EQ(run.obstacles_m.size(), 2u);
+    EXPECT_TRUE(run.reached_goal_cell);
+    EXPECT_LE(run.final_error_m, 0.1);
+    EXPECT_GT(run.avoidance_updates, 0);  // the boxes were in the way and were avoided
+    // It went round the boxes: the repeated path (estimates, a few cm off the truth) keeps about
+    // the body's radius from them.
+    const double radius = ObstacleCourseOptions{}.body.body_radius_m;
+    double closest = 1e9;
+    for (const Vec2 p : run.repeated_path_m) {
+      for (const auto& box : run.obstacles_m) closest = std::min(closest, distance_to_box(p, box));
+    }
+    std::cout << "closest approach to a box " << closest << " m\n";
+    EXPECT_GE(closest, radius - 0.05);
+  }
+
+  // Without the avoidance the first box stops the robot: the drive runs out of time.
+  const CourseRun blind = run_course(*camera, *sg, /*avoid=*/false, RepeatNavigation::kPolyline,
+                                     /*max_drive_s=*/120.0);
+  EXPECT_FALSE(blind.run);
+  EXPECT_NE(blind.error.find("navigation exceeded max_drive_s"), std::string::npos) << blind.error;
+}
+
 TEST(TeachAndRepeat, InvalidOptionsNameTheField) {
   TeachAndRepeatOptions o;
   EXPECT_FALSE(validate(o));
@@ -100,6 +171,11 @@ TEST(TeachAndRepeat, InvalidOptionsNameTheField) {
   o.slam.max_candidates = 0;
   ASSERT_TRUE(validate(o));
   EXPECT_NE(validate(o)->find("max_candidates"), std::string::npos);
+  o = {};
+  o.obstacle_course = ObstacleCourseOptions{};
+  o.obstacle_course->body.body_radius_m = o.clearance_m;  // the taught route would touch walls
+  ASSERT_TRUE(validate(o));
+  EXPECT_NE(validate(o)->find("body_radius_m"), std::string::npos);
 }
 
 }  // namespace

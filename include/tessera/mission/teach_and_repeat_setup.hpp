@@ -5,6 +5,7 @@
 // Deterministic for a seed. No I/O.
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "tessera/core/pose2.hpp"
@@ -59,6 +60,27 @@ struct TeachAndRepeatScenario {
 [[nodiscard]] Result<TeachAndRepeatScenario> set_up_teach_and_repeat(
     const World& world, const std::vector<WallTexture>& textures, std::optional<Vec2> start_m,
     std::optional<Vec2> goal_m, double clearance_m, double route_length_m, std::uint64_t seed);
+
+/// Boxes put on a taught route (the obstacle course of thesis chapter 5, Figure 5.1): `world`
+/// with the boxes' cells solid, and each box as its lo and hi corners.
+struct RouteObstacles {
+  World world;
+  std::vector<std::pair<Vec2, Vec2>> boxes_m;
+};
+
+/// `count` square boxes of side side_m centred on `route` (start to goal), spread over the part of
+/// it at least min_end_distance_m (along the route) from either end: box k at a random place in
+/// the k-th of `count` equal shares, with a random sideways offset of up to a quarter of its side.
+/// A box stands on open floor: no wall or earlier box within free_around_m of it, so the robot
+/// can pass it on either side (a reactive avoidance cannot know which side leads on: a box beside
+/// a door would be a trap, decision 0028), and a route keeping clearance_m from everything must
+/// still join the ends. Where the drawn place fails, the box
+/// moves along the route in 5 cm steps, alternately after and before it, anywhere on that part.
+/// Input error when the route is too short for the boxes or a box has no such place.
+/// Deterministic for the Rng. Cost: one route search per place tried.
+[[nodiscard]] Result<RouteObstacles> place_route_obstacles(
+    const World& world, const std::vector<Vec2>& route_m, int count, double side_m,
+    double min_end_distance_m, double clearance_m, double free_around_m, Rng& rng);
 
 /// The fusion mapping run's waypoints (tessera fusion --world, decision 0010): plan_route from the
 /// start to the goal and back, without the start itself (sim/rgbd_run.hpp's RgbdRunOptions

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tessera/core/result.hpp"
@@ -27,8 +28,10 @@ struct HexMapPicture {
   std::vector<Vec2> taught_path_m;    // blue: the estimated path while teaching
   std::vector<Vec2> repeated_path_m;  // orange: the estimated path while repeating
   std::vector<Vec2> true_path_m;      // green: ground truth
-  std::ptrdiff_t start_cell = -1;     // filled green; -1 for none
-  std::ptrdiff_t goal_cell = -1;      // filled red; -1 for none
+  /// Boxes put in the way (the obstacle course), lo and hi corners: filled dark red.
+  std::vector<std::pair<Vec2, Vec2>> obstacles_m;
+  std::ptrdiff_t start_cell = -1;  // filled green; -1 for none
+  std::ptrdiff_t goal_cell = -1;   // filled red; -1 for none
   double pixels_per_m = 100.0;
 };
 
@@ -42,6 +45,7 @@ inline constexpr Rgb kHexRepeatedPathColor{255, 127, 14};
 inline constexpr Rgb kHexTruePathColor{44, 160, 44};
 inline constexpr Rgb kHexStartColor{150, 220, 150};
 inline constexpr Rgb kHexGoalColor{240, 140, 140};
+inline constexpr Rgb kHexObstacleColor{178, 34, 34};
 
 /// The SVG document. Every cell is one `<polygon class="cell" .../>`. kInput errors: no map, a map
 /// without cells, pixels_per_m not > 0, a start or goal cell that does not exist, a coordinate

@@ -77,6 +77,15 @@ depth-icp-table: build
 obstacle-course: cli
 	python3 scripts/obstacle_course_table.py --images docs/images
 
+# Issue 18 item 11: the thesis' claims (docs/fusion-claims.md) - Appendix B/C figures of the ORB
+# teach-and-repeat runs, the same runs with half the frames dropped and with posters from 3 photos.
+.PHONY: fusion-claims
+fusion-claims: cli
+	python3 scripts/fusion_table.py --features orb --out out/claims-base
+	python3 scripts/fusion_table.py --features orb --out out/claims-base --appendix --reuse-only
+	python3 scripts/fusion_table.py --features orb --drop-frames 0.5 --out out/claims-drop50
+	python3 scripts/fusion_table.py --features orb --photos 3 --out out/claims-photos3
+
 # Issue 16's localization figures on the Intel log: map 0-600 s, localize 600-1,088 s (relations,
 # real-time factor), relocalize from 50 starts with no initial pose, 10 kidnappings
 # (docs/localization.md).

@@ -4,9 +4,9 @@
 scripts/fusion_table.py), seeds 1-3, ORB, with boxes put on the taught route before the repeat stage
 and the reactive avoidance in the navigation loop. For each world and seed it runs our navigation
 (cell polyline + pure pursuit) and the thesis' (re-decide the best neighbour at every border), both
-without and with the boxes, and ours with the thesis' own avoidance rule; it prints the Markdown table
-of docs/fusion-navigation.md ("The obstacle course") and, with --images, copies the hex-map pictures
-of seed 1 in the office.
+without and with the boxes (and, with --configs 4, ours with the thesis' own avoidance rule); it
+prints the Markdown table of docs/fusion-navigation.md ("The obstacle course") and, with --images,
+copies the hex-map pictures of the office's runs of ours with boxes that reached the goal.
 
 usage: scripts/obstacle_course_table.py [--tessera build/dev/apps/tessera/tessera] [--seeds 1 2 3]
                                         [--obstacles 2] [--jobs 2] [--out out/obstacle-course]
@@ -77,10 +77,11 @@ def main():
     ap.add_argument("--out", default=str(ROOT / "out/obstacle-course"))
     ap.add_argument("--images", help="copy seed 1's office pictures here")
     ap.add_argument("--worlds", type=int, default=len(WORLDS), help="the first N worlds only")
-    ap.add_argument("--configs", type=int, nargs="+", default=list(range(len(CONFIGS))))
+    ap.add_argument("--configs", type=int, nargs="+", default=[0, 1, 2, 3])
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--reuse", action="store_true",
-                    help="read the report.json of runs already in --out instead of running them")
+                    help="read the report.json of runs already in --out (failed runs have none and run "
+                         "again)")
     args = ap.parse_args()
     if not PHOTOS.is_dir():
         print(f"{PHOTOS}: missing (the poster photos)", file=sys.stderr)
@@ -106,12 +107,11 @@ def main():
         mean = sum(rev) / len(rev) if rev else float("nan")
         print(f"- {name}: goal cell reached {reached}/{len(rows)}, heading reversals "
               f"{min(rev, default=0)}-{max(rev, default=0)} (mean {mean:.1f})")
-    if args.images:
+    if args.images:  # the office's runs of ours with boxes that got through
         dest = pathlib.Path(args.images)
         for (w, s, c), (out, r) in zip(jobs, results):
-            if w is WORLDS[0] and s == args.seeds[0] and "error" not in r and c[2]:
-                tag = f"obstacle_course_{c[1]}_{c[3]}.png"
-                shutil.copy(out / "hex_map_run1.png", dest / tag)
+            if w is WORLDS[0] and c == CONFIGS[2] and "error" not in r:
+                shutil.copy(out / "hex_map_run1.png", dest / f"obstacle_course_office_seed{s}.png")
     if args.check:
         ours = [r for (w, s, c), (_, r) in zip(jobs, results) if c[1] == "ours" and c[2]
                 and c[3] == "strip"]

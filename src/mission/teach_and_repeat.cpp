@@ -550,9 +550,9 @@ Status TeachAndRepeat::confirm_start_node() {
 
 // Step 8: navigate to the goal cell: the wavefront over the learned cells as written (thesis
 // 4.3.5), the non-zigzag polyline (6.2 item 3) and pure pursuit on the estimate, replanned from
-// the current estimate after each correction and when the avoidance has pushed the robot off its
-// path; or, as the baseline, the thesis' re-decision at every border (nav/greedy_cell_controller).
-// On an obstacle course the reactive avoidance (4.3.4) filters every command.
+// the current estimate after each correction; or, as the baseline, the thesis' re-decision at
+// every border (nav/greedy_cell_controller). On an obstacle course the reactive avoidance (4.3.4)
+// filters every command.
 Status TeachAndRepeat::navigate() {
   TeachAndRepeatSimulation& x = *sim_;
   const fusion::FusionSlam& slam = x.slam();

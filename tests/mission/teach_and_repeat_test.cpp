@@ -172,6 +172,10 @@ TEST(TeachAndRepeat, InvalidOptionsNameTheField) {
   ASSERT_TRUE(validate(o));
   EXPECT_NE(validate(o)->find("max_candidates"), std::string::npos);
   o = {};
+  o.frame_drop_probability = 1.0;  // every frame lost: no map
+  ASSERT_TRUE(validate(o));
+  EXPECT_NE(validate(o)->find("frame_drop_probability"), std::string::npos);
+  o = {};
   o.obstacle_course = ObstacleCourseOptions{};
   o.obstacle_course->body.body_radius_m = o.clearance_m;  // the taught route would touch walls
   ASSERT_TRUE(validate(o));

@@ -42,13 +42,17 @@ Result<RgbdCamera> office_camera(std::uint64_t poster_seed) {
   return RgbdCamera::create(world, RgbdCameraOptions{}, std::move(*textures), std::move(posters));
 }
 
+/// A start and goal about 7 m apart along a route keeping 0.3 m (seeded).
+Result<StartAndGoal> seven_metre_route(const RgbdCamera& camera) {
+  Rng rng(11);
+  return choose_start_and_goal(camera.world(), 0.3, /*route_length_m=*/7.0, rng);
+}
+
 TEST(TeachAndRepeat, ShortRunInTheOfficeMeetsTheBars) {
   TESSERA_REQUIRE_DATA(support::data_path(kPhotos));
   const Result<RgbdCamera> camera = office_camera(7);
   ASSERT_TRUE(camera) << camera.error().message;
-  Rng rng(11);
-  const Result<StartAndGoal> sg =
-      choose_start_and_goal(camera->world(), 0.3, /*route_length_m=*/7.0, rng);
+  const Result<StartAndGoal> sg = seven_metre_route(*camera);
   ASSERT_TRUE(sg) << sg.error().message;
   TeachAndRepeatOptions options;
   options.capture_neck_angles_rad = {-1.0, 0.0,
@@ -125,9 +129,7 @@ TEST(TeachAndRepeat, ObstacleCourseTheRobotGoesRoundTheBoxesAndStillReachesTheGo
   TESSERA_REQUIRE_DATA(support::data_path(kPhotos));
   const Result<RgbdCamera> camera = office_camera(7);
   ASSERT_TRUE(camera) << camera.error().message;
-  Rng rng(11);
-  const Result<StartAndGoal> sg =
-      choose_start_and_goal(camera->world(), 0.3, /*route_length_m=*/7.0, rng);
+  const Result<StartAndGoal> sg = seven_metre_route(*camera);
   ASSERT_TRUE(sg) << sg.error().message;
 
   {

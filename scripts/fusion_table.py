@@ -167,14 +167,9 @@ def main():
             if not link.exists():
                 link.symlink_to(photo)
         TEXTURES[0] = few
-    if args.appendix:
-        text = appendix_table(args, out_root)
-        print(text, end="")
-        if args.doc:
-            pathlib.Path(args.doc).write_text(text)
-        return
-    if args.mapping:
-        text = mapping_table(args, out_root)
+    other_table = appendix_table if args.appendix else mapping_table if args.mapping else None
+    if other_table:
+        text = other_table(args, out_root)
         print(text, end="")
         if args.doc:
             pathlib.Path(args.doc).write_text(text)

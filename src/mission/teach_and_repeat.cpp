@@ -42,11 +42,7 @@ std::pair<int, int> goal_view_score(const fusion::NodeCreation& view) {
 double distance_to_polyline(Vec2 p, const std::vector<Vec2>& line) {
   double best = line.empty() ? std::numeric_limits<double>::infinity() : (p - line[0]).norm();
   for (std::size_t i = 1; i < line.size(); ++i) {
-    const Vec2 a = line[i - 1], d = line[i] - a;
-    const double len2 = d.x * d.x + d.y * d.y;
-    const double t =
-        len2 > 0.0 ? std::clamp(((p - a).x * d.x + (p - a).y * d.y) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (p - (a + d * t)).norm());
+    best = std::min(best, distance_to_segment(p, line[i - 1], line[i]));
   }
   return best;
 }

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "tessera/grid/cell_region.hpp"
 #include "tessera/nav/cell_polyline.hpp"
 #include "tessera/nav/route_planner.hpp"
 #include "tessera/sim/tour.hpp"
@@ -135,14 +136,16 @@ std::pair<Vec2, Vec2> point_and_normal_at(const std::vector<Vec2>& line, double 
   return {line.front(), Vec2{0.0, 1.0}};
 }
 
+// `world` with the cells the box [lo_m, hi_m] overlaps made solid (the overlap rule of
+// World::any_solid_in, grid/cell_region.hpp).
 World with_box(const World& world, Vec2 lo_m, Vec2 hi_m) {
   const GridGeometry& g = world.geometry();
   std::vector<std::uint8_t> solid(world.solid_cells().begin(), world.solid_cells().end());
-  for (std::size_t i = 0; i < solid.size(); ++i) {
-    const Vec2 c = g.center_of(g.cell_of(i));
-    const double h = 0.5 * g.resolution_m();
-    // Cells the box overlaps with positive area.
-    if (c.x + h > lo_m.x && c.x - h < hi_m.x && c.y + h > lo_m.y && c.y - h < hi_m.y) solid[i] = 1;
+  const CellRange r = cells_overlapping(g, lo_m, hi_m);
+  for (int y = std::max(r.y0, 0); y < std::min(r.y1, g.height()); ++y) {
+    for (int x = std::max(r.x0, 0); x < std::min(r.x1, g.width()); ++x) {
+      solid[g.index_of({x, y})] = 1;
+    }
   }
   return World(g, std::move(solid), world.name());
 }

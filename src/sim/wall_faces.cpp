@@ -1,6 +1,5 @@
 #include "tessera/sim/wall_faces.hpp"
 
-#include <algorithm>
 #include <array>
 #include <limits>
 
@@ -18,13 +17,6 @@ constexpr std::array<SideInfo, 4> kSides = {{
     {0, 1, {0.0, -1.0}},   // kPlusY
     {0, -1, {0.0, 1.0}},   // kMinusY
 }};
-
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = ab.dot(ab);
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (p - (a + ab * t)).norm();
-}
 
 }  // namespace
 

@@ -188,10 +188,7 @@ TEST(TeachAndRepeatSetup, BoxesSitOnTheRouteAwayFromItsEndsAndLeaveAWayRound) {
     // On the route: its centre within a quarter side of some leg.
     double off = 1e9;
     for (std::size_t i = 1; i < route->size(); ++i) {
-      const Vec2 a = (*route)[i - 1], d = (*route)[i] - a;
-      const double t =
-          std::clamp(((c - a).x * d.x + (c - a).y * d.y) / (d.x * d.x + d.y * d.y), 0.0, 1.0);
-      off = std::min(off, (c - (a + d * t)).norm());
+      off = std::min(off, distance_to_segment(c, (*route)[i - 1], (*route)[i]));
     }
     EXPECT_LE(off, 0.25 * 0.3 + 1e-9);
     EXPECT_GE((c - route->front()).norm(), 1.0);  // 1.5 m along the route, at least 1 m away

@@ -3,9 +3,6 @@
 // SLAM thesis (sections 5.2.1 and 6.1) is measured by (docs/fusion-navigation.md). A reversal is
 // the heading turning back by more than threshold_rad from its last extreme; the hysteresis keeps
 // jitter below the threshold from counting, and a steady turn (a bend, a U-turn) counts nothing.
-#include <optional>
-#include <string>
-
 namespace tessera {
 
 class HeadingReversalCounter {

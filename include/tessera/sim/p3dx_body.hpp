@@ -5,7 +5,6 @@
 // sensed in a World for nav/reactive_avoidance.hpp. Sonar beams are cones: a reading is the
 // nearest echo within the cone, so a wall beside the beam's axis reads as an obstacle on it, as a
 // real sonar's does. Deterministic for the Rng. No I/O.
-#include <array>
 #include <optional>
 #include <string>
 #include <vector>

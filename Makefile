@@ -93,6 +93,12 @@ fusion-claims: cli
 localize-bench: build
 	build/dev/bench/slam/localize_bench
 
+# Issue 16's bounded lifelong mapping: the Intel log mapped, then resumed five times over the same
+# session; nodes, peak memory, file size and relations per pass (docs/sessions.md).
+.PHONY: lifelong
+lifelong: cli
+	python3 scripts/lifelong_table.py
+
 # Issue 14's throughput benchmark: tessera team with 1, 3 and 8 robot processes over DDS; prints
 # map and claim traffic per robot and the scan-to-map latency (docs/ros2.md).
 .PHONY: team-bench

@@ -28,7 +28,9 @@ nlohmann::json session_json(const std::filesystem::path& file, const Session& s)
           {"tessera_version", s.tessera_version},
           {"command", s.command},
           {"scans", s.scans.size()},
-          {"trajectories", s.trajectory_starts.size() + 1},
+          {"trajectories",
+           s.trajectory_starts.size() +
+               (!s.trajectory_starts.empty() && s.trajectory_starts[0].first_scan == 0 ? 0 : 1)},
           {"duration_s", duration_s},
           {"nodes", nodes},
           {"submaps", submaps},

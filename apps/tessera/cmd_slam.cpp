@@ -159,7 +159,8 @@ int SlamCommand::run() const {
 
   std::optional<RelationMetric> metric;
   if (relations) {
-    Result<RelationMetric> scored = relation_metric(r.trajectory, *relations, time_offset_s_);
+    Result<RelationMetric> scored =
+        relation_metric(newest_poses(r.trajectory, starts), *relations, time_offset_s_);
     if (!scored) {
       Error e = scored.error();
       e.message = relations_->string() + " against the SLAM trajectory: " + e.message;
@@ -180,6 +181,9 @@ int SlamCommand::run() const {
                              report["options"], wall_s, duration_s}));
   if (relations_) report["options"]["relations"] = relations_->string();
   if (input_.bag) report["bag"] = bag_report;
+  Result<std::optional<slam::TrimmedRun>> trimmed =
+      trim_session(log, starts, options, r, resumed["trim"] = nlohmann::json::object());
+  if (!trimmed) return report_error(trimmed.error());
   if (resume_) report["resume"] = resumed;
   // A simulated run: its ATE of SLAM, local SLAM and odometry against the truth, and the map
   // against the world, aligned as the ATE aligns the trajectory.
@@ -208,8 +212,12 @@ int SlamCommand::run() const {
       !s) {
     return report_error(s.error());
   }
-  if (Status s = save_session(log.scans, starts, options.loop_closure, r); !s)
+  if (Status s = *trimmed ? save_session((*trimmed)->log.scans, (*trimmed)->trim.starts,
+                                         options.loop_closure, (*trimmed)->result)
+                          : save_session(log.scans, starts, options.loop_closure, r);
+      !s) {
     return report_error(s.error());
+  }
   if (MessageSink* file = recording->file_sink()) recording->note(record_laser_slam(*file, log, r));
   if (MessageSink* live = recording->live_sink()) {
     recording->note(record_laser_slam_result(*live, r));

@@ -21,6 +21,7 @@
 #include "tessera/sensors/laser_log.hpp"
 #include "tessera/slam/laser_slam.hpp"
 #include "tessera/slam/localizer.hpp"
+#include "tessera/slam/submap_trimmer.hpp"
 
 namespace tessera::cli {
 
@@ -244,9 +245,21 @@ class SlamCommand : public Command {
   };
   [[nodiscard]] Result<Resumed> resume_session(LaserLog log, slam::LaserSlamOptions& options,
                                                nlohmann::json& report) const;
+  /// What --resume --save keeps (bounded lifelong mapping, decision 0029): the run `r` of `log`
+  /// trimmed and replayed (slam::trim_and_replay). Empty when nothing is trimmed (or
+  /// --keep-all-passes). `report` gets what was trimmed.
+  [[nodiscard]] Result<std::optional<slam::TrimmedRun>> trim_session(
+      const LaserLog& log, const std::vector<slam::TrajectoryStart>& starts,
+      slam::LaserSlamOptions options, const slam::LaserSlamResult& r, nlohmann::json& report) const;
+  /// The poses a resumed run's relations are scored on: at a stamp that several trajectories
+  /// cover (a log resumed again), the newest trajectory's, as the robot's estimate now.
+  [[nodiscard]] static std::vector<StampedPose2> newest_poses(
+      const std::vector<StampedPose2>& trajectory,
+      const std::vector<slam::TrajectoryStart>& starts);
   std::optional<std::filesystem::path> save_;
   std::optional<std::filesystem::path> resume_;
   std::optional<std::string> initial_pose_;  // --resume: "X,Y,THETA" of the log's first scan
+  bool keep_all_passes_ = false;             // --resume --save: trim nothing
 };
 
 /// tessera session export: a saved session's map, pose graph and trajectory as files

@@ -57,6 +57,11 @@ void SlamCommand::add_session_options() {
                    "its pose graph, joined to the old ones by loop closures; the log's start is "
                    "found in the session's map (or given by --initial-pose). Save the result "
                    "with --save");
+  sub_->add_flag("--keep-all-passes", keep_all_passes_,
+                 "--resume --save: keep every scan of the session; by default the submaps of "
+                 "earlier trajectories that later ones have seen again are trimmed, with their "
+                 "scans, so that a session resumed again and again stays bounded "
+                 "(docs/sessions.md)");
   sub_->add_option("--initial-pose", initial_pose_,
                    "--resume: X,Y[,THETA] (m, m, rad) of the log's first scan in the session's map "
                    "(default: found by global relocalization)");
@@ -68,6 +73,10 @@ Status SlamCommand::check_session_options() const {
     return usage_error("--initial-pose places a resumed log: it needs --resume");
   }
   if (autosave_s_ > 0.0 && !save_) return usage_error("--autosave-s saves to --save: give it");
+  if (keep_all_passes_ && !(resume_ && save_)) {
+    return usage_error(
+        "--keep-all-passes is about what --resume saves: it needs --resume and --save");
+  }
   return Ok{};
 }
 
@@ -158,7 +167,7 @@ Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
   report = {
       {"session", name},
       {"session_scans", session->scans.size()},
-      {"trajectories", out.starts.size() + 1},
+      {"trajectories", slam::trajectory_count(out.starts)},
       {"start", {{"x_m", T_map_first.x}, {"y_m", T_map_first.y}, {"theta_rad", T_map_first.theta}}},
       {"start_from", initial_pose_ ? "--initial-pose" : "relocalization"},
       {"relocalized_after_s", found_after_s ? nlohmann::json(*found_after_s) : nullptr}};
@@ -166,6 +175,76 @@ Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
   out.log.backward_stamps = log.backward_stamps;
   out.log.scans.insert(out.log.scans.end(), std::make_move_iterator(log.scans.begin()),
                        std::make_move_iterator(log.scans.end()));
+  return out;
+}
+
+Result<std::optional<slam::TrimmedRun>> SlamCommand::trim_session(
+    const LaserLog& log, const std::vector<slam::TrajectoryStart>& starts,
+    slam::LaserSlamOptions options, const slam::LaserSlamResult& r, nlohmann::json& report) const {
+  if (!resume_ || !save_ || keep_all_passes_) {
+    report = nullptr;
+    return std::optional<slam::TrimmedRun>{};
+  }
+  slam::SubmapTrimOptions trim_options;
+  trim_options.points = options.points;
+  ProgressLine progress(!quiet_ && stderr_is_terminal());
+  options.progress = [&progress](const slam::SlamProgress& p) {
+    if (p.scans_done % 25 != 0 && p.scans_done != p.scans_total) return;
+    progress.show(fmt::format("trim: replaying kept scan {}/{}", p.scans_done, p.scans_total),
+                  p.scans_done, p.scans_total, "scans");
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  Result<slam::TrimmedRun> trimmed = slam::trim_and_replay(log, starts, r, options, trim_options);
+  progress.finish();
+  if (!trimmed) {
+    Error e = trimmed.error();
+    e.message = "replaying the trimmed session: " + e.message;
+    return e;
+  }
+  const slam::SubmapTrim& trim = trimmed->trim;
+  const bool replayed = trim.kept_scans.size() < log.scans.size();
+  report = {{"submaps", trim.submaps},
+            {"submaps_trimmed", trim.submaps_trimmed},
+            {"nodes", trim.nodes},
+            {"nodes_trimmed", trim.nodes_trimmed},
+            {"nodes_after", replayed ? trimmed->result.stats.nodes : trim.nodes},
+            {"scans", log.scans.size()},
+            {"scans_kept", trim.kept_scans.size()},
+            {"trajectories_kept", slam::trajectory_count(trim.starts)},
+            {"fresh_shares", trim.fresh_shares},
+            {"fresh_areas_m2", trim.fresh_areas_m2},
+            {"wall_s", seconds_since(t0)}};
+  if (!replayed) return std::optional<slam::TrimmedRun>{};
+  return std::optional<slam::TrimmedRun>{std::move(trimmed).value()};
+}
+
+std::vector<StampedPose2> SlamCommand::newest_poses(
+    const std::vector<StampedPose2>& trajectory, const std::vector<slam::TrajectoryStart>& starts) {
+  // Trajectory k holds the poses [begin(k), begin(k + 1)); the newest is scored whole, and each
+  // older pose only outside the time spans of the trajectories after it.
+  const auto begin = [&](std::size_t k) {
+    return k == 0               ? std::size_t{0}
+           : k <= starts.size() ? static_cast<std::size_t>(starts[k - 1].first_scan)
+                                : trajectory.size();
+  };
+  std::vector<std::pair<double, double>> newer_spans;
+  std::vector<StampedPose2> out;
+  for (std::size_t k = starts.size() + 1; k-- > 0;) {
+    const std::size_t b = begin(k), e = begin(k + 1);
+    if (b >= e) continue;
+    for (std::size_t i = b; i < e; ++i) {
+      const double t = trajectory[i].t_s;
+      if (std::none_of(newer_spans.begin(), newer_spans.end(),
+                       [t](const auto& span) { return t >= span.first && t <= span.second; })) {
+        out.push_back(trajectory[i]);
+      }
+    }
+    const auto [lo, hi] = std::minmax_element(
+        trajectory.begin() + static_cast<std::ptrdiff_t>(b),
+        trajectory.begin() + static_cast<std::ptrdiff_t>(e),
+        [](const StampedPose2& a, const StampedPose2& c) { return a.t_s < c.t_s; });
+    newer_spans.emplace_back(lo->t_s, hi->t_s);
+  }
   return out;
 }
 

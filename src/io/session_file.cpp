@@ -342,12 +342,15 @@ Result<Session> decode_session(std::string_view bytes, const std::string& name) 
   parse("GRPH", [&](Fields& f) { read_graph(f, s.graph, s.vertex_scan); });
   parse("MAP ", [&](Fields& f) { read_map(f, s.map); });
   if (problem) return error(*problem);
+  // Version 3 (a trimmed session) may also place its first scan.
+  const int lowest_first = version >= 3 ? 0 : 1;
   for (std::size_t k = 0; k < s.trajectory_starts.size(); ++k) {
     const int first = s.trajectory_starts[k].first_scan;
-    if (first < 1 || first >= static_cast<int>(s.scans.size()) ||
+    if (first < lowest_first || first >= static_cast<int>(s.scans.size()) ||
         (k > 0 && first <= s.trajectory_starts[k - 1].first_scan)) {
-      return error("trajectory " + std::to_string(k + 2) + " starts at scan " +
-                   std::to_string(first) + ", not at a scan after the first in order");
+      return error("trajectory start " + std::to_string(k + 1) + " is at scan " +
+                   std::to_string(first) + ", not at a scan " +
+                   (lowest_first == 0 ? "of the session" : "after the first") + " in order");
     }
   }
   if (s.trajectory.size() != s.scans.size()) {

@@ -766,9 +766,9 @@ Result<LaserSlamResult> run_laser_slam(const LaserLog& log, const LaserSlamOptio
   const int total = static_cast<int>(log.scans.size());
   for (std::size_t k = 0; k < starts.size(); ++k) {
     const int first = starts[k].first_scan;
-    if (first < 1 || first >= total || (k > 0 && first <= starts[k - 1].first_scan)) {
+    if (first < 0 || first >= total || (k > 0 && first <= starts[k - 1].first_scan)) {
       return input_error("laser SLAM: trajectory start " + std::to_string(k + 1) + " is at scan " +
-                         std::to_string(first) + "; expected scans 1-" + std::to_string(total - 1) +
+                         std::to_string(first) + "; expected scans 0-" + std::to_string(total - 1) +
                          " in increasing order");
     }
   }

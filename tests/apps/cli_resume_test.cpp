@@ -104,7 +104,7 @@ TEST(CliResume, ContinuesASavedSessionAsANewTrajectoryFoundInItsMap) {
   const auto info = run_cli("info --json " + (out.path() / "second.tsm").string());
   ASSERT_EQ(info.exit_code, 0) << info.output;
   EXPECT_THAT(info.output, HasSubstr("\"trajectories\": 2"));
-  EXPECT_THAT(info.output, HasSubstr("\"format_version\": 2"));
+  EXPECT_THAT(info.output, HasSubstr("\"format_version\": 3"));
 
   // Resumed again (the two trajectories replayed from their saved starts), from a given pose.
   const Pose2 last = whole.back().pose;
@@ -203,6 +203,49 @@ TEST(CliResume, AKilledRunLeavesItsLastAutosavedSession) {
   EXPECT_EQ(resumed.exit_code, 0) << resumed.output;
 }
 
+// Bounded lifelong mapping: the same 90 s resumed twice over the session of them. Each save
+// trims the earlier pass where the newer one saw the same rooms, so the session stays the size
+// of one pass, its trajectory stays where one run puts the robot, and the saved state is what
+// the next resume rebuilds. --keep-all-passes keeps both passes.
+TEST(CliResume, ASessionResumedAgainAndAgainStaysBounded) {
+  TESSERA_REQUIRE_DATA(intel_log());
+  const auto& dir = runs();
+  const TempDir out;
+  const auto session = out.path() / "s.tsm";
+  std::filesystem::copy_file(dir / "first.tsm", session);
+  const nlohmann::json first = nlohmann::json::parse(read_bytes(dir / "first" / "report.json"));
+  const int first_nodes = first["slam"]["nodes"].get<int>();
+  const std::string resume = "slam --quiet --log " + intel_log().string() + " --to-s 90 --resume " +
+                             session.string() + " --save " + session.string();
+  for (int pass = 1; pass <= 2; ++pass) {
+    const auto run = out.path() / ("pass" + std::to_string(pass));
+    const auto r = run_cli(resume + " --out " + run.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json trim =
+        nlohmann::json::parse(read_bytes(run / "report.json"))["resume"]["trim"];
+    EXPECT_GT(trim["submaps_trimmed"].get<int>(), 0) << pass;
+    EXPECT_GT(trim["nodes_trimmed"].get<int>(), first_nodes / 2) << pass;
+    EXPECT_LE(trim["nodes_after"].get<int>(), first_nodes * 12 / 10) << pass;
+    // The pass itself went where the first run did (its scans are the newest: scored whole).
+    const std::vector<StampedPose2> mine = sorted_trajectory(run / "trajectory.txt");
+    const std::vector<StampedPose2> theirs = sorted_trajectory(dir / "first" / "trajectory.txt");
+    EXPECT_LT(worst_distance_m(theirs, mine), 0.1) << pass;
+  }
+  const auto info = run_cli("info --json " + session.string());
+  ASSERT_EQ(info.exit_code, 0) << info.output;
+  const nlohmann::json saved = nlohmann::json::parse(info.output);
+  EXPECT_LE(saved["scans"].get<int>(), first["slam"]["scans"].get<int>() * 12 / 10);
+
+  const auto kept = out.path() / "kept.tsm";
+  const auto keep_all =
+      run_cli("slam --quiet --log " + intel_log().string() +
+              " --to-s 90 --keep-all-passes --resume " + (dir / "first.tsm").string() + " --save " +
+              kept.string() + " --out " + (out.path() / "kept").string());
+  ASSERT_EQ(keep_all.exit_code, 0) << keep_all.output;
+  const nlohmann::json both = nlohmann::json::parse(run_cli("info --json " + kept.string()).output);
+  EXPECT_EQ(both["scans"].get<int>(), 2 * first["slam"]["scans"].get<int>());
+}
+
 TEST(CliResume, BadInputIsOneLineAndWritesNothing) {
   TESSERA_REQUIRE_DATA(intel_log());
   const auto& dir = runs();
@@ -247,6 +290,9 @@ TEST(CliResume, BadInputIsOneLineAndWritesNothing) {
       run_cli("slam --log " + intel_log().string() + " --autosave-s 10 --out " + out.string());
   EXPECT_EQ(autosave_alone.exit_code, 2);
   EXPECT_THAT(autosave_alone.output, HasSubstr("--autosave-s saves to --save"));
+  const auto keep_alone = run_cli(resume + " --keep-all-passes --out " + out.string());
+  EXPECT_EQ(keep_alone.exit_code, 2);
+  EXPECT_THAT(keep_alone.output, HasSubstr("--keep-all-passes is about what --resume saves"));
   // A log that never comes into the session's map (the robot standing at the start for 10 s,
   // then the log 400 s later, far away): no guess, exit 4.
   const auto small = run_cli("slam --quiet --log " + intel_log().string() + " --to-s 10 --out " +

@@ -37,7 +37,7 @@ TEST(CliSession, SavedSessionIsDescribedAndExportsTheRunsOwnOutputs) {
   const auto& dir = saved_run();
   const auto info = run_cli("info " + (dir / "run.tsm").string());
   ASSERT_EQ(info.exit_code, 0) << info.output;
-  EXPECT_THAT(info.output, HasSubstr("tessera session, format 2"));
+  EXPECT_THAT(info.output, HasSubstr("tessera session, format 3"));
   EXPECT_THAT(info.output, HasSubstr("scans       201 over 20.0 s"));
   const TempDir out;
   const auto exported = run_cli("session export " + (dir / "run.tsm").string() + " --quiet --out " +

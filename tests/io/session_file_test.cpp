@@ -107,8 +107,8 @@ TEST(SessionFile, DamagedTruncatedNewerAndForeignFilesAreInputErrorsNamingTheFil
   flipped[200] = static_cast<char>(flipped[200] ^ 0x10);
   EXPECT_THAT(error_of(flipped), HasSubstr("checksum mismatch, the file is damaged"));
   std::string newer = good;
-  newer[8] = 3;  // format version, little-endian u32 after the signature
-  EXPECT_THAT(error_of(newer), HasSubstr("session format 3 is not one this tessera reads"));
+  newer[8] = 4;  // format version, little-endian u32 after the signature
+  EXPECT_THAT(error_of(newer), HasSubstr("session format 4 is not one this tessera reads"));
   EXPECT_THAT(error_of("FLASER 180 1.0 2.0\n"), HasSubstr("not a tessera session"));
 }
 
@@ -122,11 +122,11 @@ TEST(SessionFile, ContentsThatDoNotAgreeAreInputErrors) {
   s = small_session();
   s.trajectory[1].pose.x = std::numeric_limits<double>::infinity();
   EXPECT_THAT(error_of(encode_session(s)), HasSubstr("record TRAJ: pose is not a finite number"));
-  // A trajectory starts at a scan after the first, in order.
-  for (const std::vector<int>& firsts : {std::vector<int>{0}, {3}, {2, 1}, {1, 1}}) {
+  // Trajectories start at scans of the session, in order.
+  for (const std::vector<int>& firsts : {std::vector<int>{-1}, {3}, {2, 1}, {1, 1}, {0, 0}}) {
     s = small_session();
     for (const int first : firsts) s.trajectory_starts.push_back({first, {}});
-    EXPECT_THAT(error_of(encode_session(s)), HasSubstr("not at a scan after the first in order"));
+    EXPECT_THAT(error_of(encode_session(s)), HasSubstr("not at a scan of the session in order"));
   }
 }
 
@@ -178,6 +178,28 @@ TEST(SessionFile, AVersionOneFileReadsAsOneTrajectory) {
   EXPECT_EQ(back->format_version, 1u);
   // Version 2 requires the record.
   EXPECT_THAT(error_of(signed_as(2)), HasSubstr("no STRT record"));
+}
+
+// Format 3 added a start at scan 0 (a trimmed session places its first kept scan); a file that
+// says it is format 2 may not have one.
+TEST(SessionFile, AStartAtTheFirstScanNeedsFormatThree) {
+  Session s = small_session();
+  s.trajectory_starts = {{0, {1.0, 2.0, 0.5}}, {2, {0.0, 4.0, -3.0}}};
+  std::string bytes = encode_session(s);
+  const Result<Session> back = decode_session(bytes, "trimmed.tsm");
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  EXPECT_EQ(back->format_version, 3u);
+  EXPECT_EQ(back->trajectory_starts[0].first_scan, 0);
+  EXPECT_EQ(back->trajectory_starts[0].T_map_robot.y, 2.0);
+  bytes.resize(bytes.size() - 16);  // the CRC record: tag, length, 4 bytes
+  bytes[8] = 2;
+  const std::uint32_t crc = crc32_of(bytes);
+  const std::uint64_t four = 4;
+  bytes += "CRC ";
+  bytes.append(reinterpret_cast<const char*>(&four), 8);
+  bytes.append(reinterpret_cast<const char*>(&crc), 4);
+  EXPECT_THAT(error_of(bytes), HasSubstr("trajectory start 1 is at scan 0, not at a scan after "
+                                         "the first in order"));
 }
 
 TEST(SessionFile, WrittenAtomicallyAndReadBack) {

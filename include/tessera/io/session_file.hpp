@@ -20,10 +20,11 @@
 namespace tessera {
 
 /// The format version this tessera writes, and the newest it reads.
-inline constexpr std::uint32_t kSessionFormatVersion = 2;
+inline constexpr std::uint32_t kSessionFormatVersion = 3;
 
-/// A trajectory after the first (a resumed session): its first scan's index in Session::scans
-/// and the T_map_robot it was started at (found by relocalization or given).
+/// A trajectory's start: its first scan's index in Session::scans and the T_map_robot it was
+/// started at (a resumed log's, found by relocalization or given; a trimmed session's segment's,
+/// where the session had it). Only a trimmed session (format 3) has a start at scan 0.
 struct SessionTrajectoryStart {
   int first_scan = 0;
   Pose2 T_map_robot;
@@ -38,8 +39,9 @@ struct Session {
   std::string options_yaml;
   /// Every scan the session took in, in input order, as read (stamps, odometry, ranges).
   std::vector<StampedScan> scans;
-  /// Where each trajectory after the first begins, by increasing first_scan (empty: one
-  /// trajectory). Replaying the scans with these starts rebuilds the session exactly.
+  /// Where each trajectory after the first begins, and where the first one does when the
+  /// session was trimmed (a start at scan 0), by increasing first_scan (empty: one trajectory
+  /// from the origin). Replaying the scans with these starts rebuilds the session exactly.
   std::vector<SessionTrajectoryStart> trajectory_starts;
   /// T_map_robot at every scan, as optimised at the end.
   std::vector<StampedPose2> trajectory;

@@ -218,12 +218,19 @@ struct LaserSlamResult {
   LaserSlamStats stats;
 };
 
-/// Where a trajectory after the first begins (LaserSlam::start_trajectory): the index of its first
-/// scan in the input and that scan's T_map_robot.
+/// Where a trajectory begins (LaserSlam::start_trajectory): the index of its first scan in the
+/// input and that scan's T_map_robot.
 struct TrajectoryStart {
   int first_scan = 0;
   Pose2 T_map_robot;
 };
+
+/// How many trajectories a run with these starts has: one more than the starts, unless one is at
+/// scan 0 (it begins the first).
+[[nodiscard]] inline int trajectory_count(const std::vector<TrajectoryStart>& starts) {
+  const bool first_placed = !starts.empty() && starts.front().first_scan == 0;
+  return static_cast<int>(starts.size()) + (first_placed ? 0 : 1);
+}
 
 /// The pipeline, fed one scan at a time (any source of StampedScan: a log file, the simulator).
 class LaserSlam {
@@ -273,9 +280,10 @@ class LaserSlam {
 using AfterScan = std::function<Status(const LaserSlam& slam, int scans_done)>;
 
 /// Runs the pipeline over a whole log, in file order, beginning a new trajectory at each of
-/// `starts` (by increasing first_scan) and calling `after_scan` after every scan. Usage error
-/// for invalid options, input error for a log without scans or a start that is not a scan of
-/// the log after the first, in order.
+/// `starts` (by increasing first_scan; a start at scan 0 only places the first scan, as a
+/// trimmed session's first kept scan is placed) and calling `after_scan` after every scan. Usage
+/// error for invalid options, input error for a log without scans or starts that are not scans
+/// of the log in increasing order.
 [[nodiscard]] Result<LaserSlamResult> run_laser_slam(
     const LaserLog& log, const LaserSlamOptions& options,
     const std::vector<TrajectoryStart>& starts = {}, const AfterScan& after_scan = {});

@@ -196,12 +196,20 @@ int run(int argc, char** argv) {
         rest.size() * static_cast<std::size_t>(k) / static_cast<std::size_t>(std::max(starts, 1));
     slam::Localizer localizer(map, options);
     std::optional<double> found_after_s;
+    std::optional<double> posed_after_s;  // the first pose, confident or not
+    Offset posed;
+    double posed_share = 0.0;
     bool wrong_here = false;
     for (std::size_t i = first; i < rest.size(); ++i) {
       const double after_s = rest[i].t_s - rest[first].t_s;
       if (found_after_s && after_s > *found_after_s + settle_s) break;
       if (!found_after_s && after_s > 30.0) break;
       const slam::LocalizedScan s = localizer.add_scan(rest[i]);
+      if (!posed_after_s && s.state != slam::LocalizationState::kLost) {
+        posed_after_s = after_s;
+        posed = offset(s.T_map_robot, reference(i));
+        posed_share = s.map_share;
+      }
       if (!s.confident) continue;
       const Offset e = offset(s.T_map_robot, reference(i));
       if (e.m > 0.1 || e.deg > 3.0) {
@@ -213,8 +221,14 @@ int run(int argc, char** argv) {
       if (!found_after_s) found_after_s = after_s;
     }
     wrong += wrong_here ? 1 : 0;
-    std::printf("  start %.1f s: pose after %.1f s; map share %.2f\n", rest[first].t_s - t0,
-                found_after_s.value_or(NAN), map_share[first]);
+    const slam::LocalizerStats& st = localizer.stats();
+    std::printf(
+        "  start %.1f s: confident pose after %.1f s; map share %.2f; first pose after %.1f s, "
+        "%.2f m / %.1f deg off, map share %.2f; searches %d: no match %d, unfit %d, see through "
+        "%d, ambiguous %d, unconfirmed %d\n",
+        rest[first].t_s - t0, found_after_s.value_or(NAN), map_share[first],
+        posed_after_s.value_or(NAN), posed.m, posed.deg, posed_share, st.searches, st.no_match,
+        st.unfit, st.see_through, st.ambiguous, st.unconfirmed);
     if (found_after_s && !wrong_here && *found_after_s <= 5.0) ++found;
     times.push_back(found_after_s.value_or(INFINITY));
   }

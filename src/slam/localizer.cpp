@@ -261,10 +261,14 @@ struct Localizer::Impl {
       const double shift_m =
           (refined.T_grid_robot.translation() - best->T_grid_robot.translation()).norm();
       const MapFit f = fit_of(refined.T_grid_robot, refine_points);
-      if (f.map_share >= options.min_map_share && f.fit >= options.min_relocalize_score &&
-          shift_m <= 2.0 * res &&
-          free_space_conflict(refined.T_grid_robot * view.back().T_view_robot.inverse()) <=
-              options.max_free_conflict) {
+      const bool fits = f.map_share >= options.min_map_share &&
+                        f.fit >= options.min_relocalize_score && shift_m <= 2.0 * res;
+      const bool sees_through =
+          fits && free_space_conflict(refined.T_grid_robot * view.back().T_view_robot.inverse()) >
+                      options.max_free_conflict;
+      stats.unfit += fits ? 0 : 1;
+      stats.see_through += sees_through ? 1 : 0;
+      if (fits && !sees_through) {
         // The runner-up: the best pose of any other place, which must score clearly less, both
         // counted above what a view that sees nothing of the map scores (unknown_score: "the
         // robot is somewhere the map does not show" is always an answer).
@@ -291,6 +295,7 @@ struct Localizer::Impl {
         } else {
           candidate = Candidate{T_map_view, 1};
         }
+        if (!runner_up && candidate->matches < options.confirmations) ++stats.unconfirmed;
         if (!runner_up && candidate->matches >= options.confirmations) {
           ++stats.relocalizations;
           out.state = LocalizationState::kRelocalized;
@@ -301,6 +306,7 @@ struct Localizer::Impl {
         }
       }
     }
+    stats.no_match += best ? 0 : 1;
     stats.search_s += seconds_since(t0);
   }
 

@@ -128,6 +128,10 @@ TEST(Localizer, AKidnappedRobotIsLostAndFoundAgain) {
   EXPECT_LE(*found_at_s, 8.0);
   EXPECT_GE(localizer.stats().losses, 1);
   EXPECT_GE(localizer.stats().relocalizations, 1);
+  // Every search ends one way: accepted, or refused for exactly one reason.
+  const LocalizerStats& st = localizer.stats();
+  EXPECT_EQ(st.searches, st.relocalizations + st.no_match + st.unfit + st.see_through +
+                             st.ambiguous + st.unconfirmed);
 }
 
 TEST(Localizer, ASymmetricRoomIsNeverClaimed) {

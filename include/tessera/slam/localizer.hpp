@@ -130,6 +130,10 @@ struct LocalizerStats {
   int relocalizations = 0;  // global searches that were accepted
   int searches = 0;         // global searches run
   int ambiguous = 0;        // searches refused because another place scored nearly as well
+  int no_match = 0;         // searches that found no pose reaching min_relocalize_score
+  int unfit = 0;            // best poses refused on map share, fit or refinement shift
+  int see_through = 0;      // best poses refused because the view sees through the map's walls
+  int unconfirmed = 0;      // clear best poses waiting for the next search to agree
   int losses = 0;           // times tracking was lost after having a pose
   double tracking_s = 0.0;  // wall time of tracking
   double search_s = 0.0;    // wall time of global searches

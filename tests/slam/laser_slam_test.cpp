@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "laser_test_world.hpp"
 #include "support/data.hpp"
 #include "tessera/core/angle.hpp"
 #include "tessera/eval/relation_metric.hpp"
@@ -45,16 +46,7 @@ const SimulatedLaserRun& office_run() {
   return run;
 }
 
-LaserSlamOptions small_submaps() {
-  LaserSlamOptions o;
-  o.submaps.scans_per_submap = 25;
-  o.optimize_every_n_nodes = 20;
-  // Enough to close this small loop with little odometry error per scan; keeps the sanitizer run
-  // short.
-  o.loop_sampling_ratio = 0.1;
-  o.real_time.angular_window_rad = 0.1;
-  return o;
-}
+using testing::small_submaps;
 
 double mean_position_error(const std::vector<StampedPose2>& estimate,
                            const std::vector<StampedPose2>& truth) {

@@ -11,10 +11,22 @@
 #include "tessera/grid/grid_geometry.hpp"
 #include "tessera/sensors/range_scan.hpp"
 #include "tessera/sim/world.hpp"
+#include "tessera/slam/laser_slam.hpp"
 #include "tessera/slam/probability_grid.hpp"
 #include "tessera/slam/scan_points.hpp"
 
 namespace tessera::slam::testing {
+
+/// Fills the cells of `solid` (on `g`) whose centres lie in [x0, x1) x [y0, y1).
+inline void fill_box(const GridGeometry& g, std::vector<std::uint8_t>& solid, double x0, double y0,
+                     double x1, double y1) {
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      const Vec2 c = g.center_of({x, y});
+      if (c.x >= x0 && c.x < x1 && c.y >= y0 && c.y < y1) solid[g.index_of({x, y})] = 1;
+    }
+  }
+}
 
 /// A 12 m x 8 m room with boxes and a partition, at 0.02 m: asymmetric, so that a scan fixes the
 /// pose. The room's interior is about [0.14, 11.86] x [0.12, 7.94].
@@ -23,12 +35,7 @@ inline World furnished_room() {
   const GridGeometry g({0.0, 0.0}, kRes, 600, 400);
   std::vector<std::uint8_t> solid(g.size(), 0);
   const auto fill = [&](double x0, double y0, double x1, double y1) {
-    for (int y = 0; y < g.height(); ++y) {
-      for (int x = 0; x < g.width(); ++x) {
-        const Vec2 c = g.center_of({x, y});
-        if (c.x >= x0 && c.x < x1 && c.y >= y0 && c.y < y1) solid[g.index_of({x, y})] = 1;
-      }
-    }
+    fill_box(g, solid, x0, y0, x1, y1);
   };
   // Wall faces at varied offsets from the 0.05 m grids the tests build, so that where a wall
   // falls inside a cell averages out (a wall exactly on a cell border biases the map by half a
@@ -43,6 +50,17 @@ inline World furnished_room() {
   fill(9.48, 1.52, 10.26, 1.98);
   fill(3.52, 1.22, 3.78, 1.46);
   return World(g, std::move(solid), "furnished room");
+}
+
+/// Laser SLAM options for short simulated runs: small submaps, frequent optimisation. Enough to
+/// close a small loop with little odometry error per scan; keeps the sanitizer runs short.
+inline LaserSlamOptions small_submaps() {
+  LaserSlamOptions o;
+  o.submaps.scans_per_submap = 25;
+  o.optimize_every_n_nodes = 20;
+  o.loop_sampling_ratio = 0.1;
+  o.real_time.angular_window_rad = 0.1;
+  return o;
 }
 
 /// A 360-beam scan (one per degree, 12 m range) from T_world_laser, exact ranges plus optional

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -21,12 +22,7 @@ World two_rooms() {
   const GridGeometry g({0.0, 0.0}, kRes, 650, 330);
   std::vector<std::uint8_t> solid(g.size(), 0);
   const auto fill = [&](double x0, double y0, double x1, double y1) {
-    for (int y = 0; y < g.height(); ++y) {
-      for (int x = 0; x < g.width(); ++x) {
-        const Vec2 c = g.center_of({x, y});
-        if (c.x >= x0 && c.x < x1 && c.y >= y0 && c.y < y1) solid[g.index_of({x, y})] = 1;
-      }
-    }
+    testing::fill_box(g, solid, x0, y0, x1, y1);
   };
   fill(0.0, 0.0, 13.0, 0.2);
   fill(0.0, 6.2, 13.0, 6.6);
@@ -199,12 +195,9 @@ SimulatedLaserRun office_run(const World& world) {
   return std::move(r).value();
 }
 
+/// The shared small-submap options on the office's 0.1 m cells.
 LaserSlamOptions small_submaps() {
-  LaserSlamOptions o;
-  o.submaps.scans_per_submap = 25;
-  o.optimize_every_n_nodes = 20;
-  o.loop_sampling_ratio = 0.1;
-  o.real_time.angular_window_rad = 0.1;
+  LaserSlamOptions o = testing::small_submaps();
   o.map_resolution_m = 0.1;
   return o;
 }
@@ -231,15 +224,11 @@ TEST(SubmapTrimmer, AnObstacleSeenGoneByANewerPassLeavesTheSavedMap) {
   const Pose2 beside = now.truth[now.truth.size() * 2 / 5].pose * Pose2{0.0, 0.9, 0.0};
   const Vec2 lo{beside.x - 0.2, beside.y - 0.2}, hi{beside.x + 0.2, beside.y + 0.2};
   std::vector<std::uint8_t> solid(office.solid_cells().begin(), office.solid_cells().end());
-  for (int y = 0; y < office.geometry().height(); ++y) {
-    for (int x = 0; x < office.geometry().width(); ++x) {
-      const Vec2 c = office.geometry().center_of({x, y});
-      if (c.x > lo.x && c.x < hi.x && c.y > lo.y && c.y < hi.y) {
-        ASSERT_EQ(solid[office.geometry().index_of({x, y})], 0) << "the box is on open floor";
-        solid[office.geometry().index_of({x, y})] = 1;
-      }
-    }
-  }
+  const std::size_t solid_before =
+      static_cast<std::size_t>(std::count(solid.begin(), solid.end(), 1));
+  testing::fill_box(office.geometry(), solid, lo.x, lo.y, hi.x, hi.y);
+  // On open floor: every cell of the box was free (0.4 m at 0.1 m cells: 16 cells).
+  ASSERT_EQ(static_cast<std::size_t>(std::count(solid.begin(), solid.end(), 1)), solid_before + 16);
   const SimulatedLaserRun then = office_run(World(office.geometry(), solid, "office with a box"));
 
   const Result<LaserSlamResult> mapped_then = run_laser_slam(then.log, small_submaps());

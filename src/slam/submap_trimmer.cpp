@@ -187,7 +187,10 @@ SubmapTrim trim_covered_submaps(const std::vector<StampedScan>& scans,
       const bool continues =
           !out.kept_scans.empty() && out.kept_scans.back() == i - 1 && t == previous_trajectory;
       const int index = static_cast<int>(out.kept_scans.size());
-      if (!continues && i > 0) {
+      // The session's own first scan needs a start only when the session placed it (a
+      // trimmed session's): otherwise it starts where its odometry puts it, as it did.
+      const bool placed_first = !starts.empty() && starts.front().first_scan == 0;
+      if (!continues && (i > 0 || placed_first)) {
         out.starts.push_back({index, trajectory[static_cast<std::size_t>(i)].pose});
       }
       out.kept_scans.push_back(i);

@@ -179,6 +179,15 @@ TEST(SubmapTrimmer, OneRunAndPassesThatSawOtherRoomsKeepEverything) {
   EXPECT_EQ(other_room.kept_scans.size(), apart.size());
   ASSERT_EQ(other_room.starts.size(), 1u);
   EXPECT_EQ(other_room.starts[0].first_scan, 6);
+
+  // A session trimmed before places its first scan; kept, it is placed there again.
+  const SubmapTrim placed = trim_covered_submaps(
+      t.scans, t.trajectory, {{0, apart[0]}, {6, apart[6]}}, t.graph, t.vertex_scan, {});
+  ASSERT_EQ(placed.starts.size(), 2u);
+  EXPECT_EQ(placed.starts[0].first_scan, 0);
+  EXPECT_EQ(placed.starts[0].T_map_robot.x, apart[0].x);
+  EXPECT_EQ(placed.starts[1].first_scan, 6);
+  EXPECT_EQ(trajectory_count(placed.starts), 2);
 }
 
 /// A simulated run through the built-in office (as laser_slam_test's, shorter).

@@ -9,6 +9,7 @@
 #include <deque>
 
 #include "tessera/core/assert.hpp"
+#include "tessera/grid/cell_region.hpp"
 
 namespace tessera::slam {
 namespace {
@@ -215,11 +216,7 @@ struct Localizer::Impl {
     int on_map = 0, conflicts = 0;
     for (int y = 1; y + 1 < v.height(); ++y) {
       for (int x = 1; x + 1 < v.width(); ++x) {
-        bool interior = true;
-        for (int dy = -1; dy <= 1 && interior; ++dy) {
-          for (int dx = -1; dx <= 1 && interior; ++dx) interior = free({x + dx, y + dy});
-        }
-        if (!interior) continue;
+        if (!inside_region_8({x, y}, free)) continue;
         const Cell c = g.cell_at_unchecked(T_map_view * v.center_of({x, y}));
         if (!g.contains(c) || !map.known(c)) continue;
         ++on_map;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "tessera/core/assert.hpp"
+#include "tessera/grid/cell_region.hpp"
 #include "tessera/grid/grid_geometry.hpp"
 #include "tessera/grid/ray_cast.hpp"
 
@@ -20,13 +21,16 @@ struct NodeRays {
   std::vector<Vec2> ends_m;
 };
 
-int trajectory_of(int scan, const std::vector<TrajectoryStart>& starts) {
-  int t = 0;
-  while (t < static_cast<int>(starts.size()) &&
-         starts[static_cast<std::size_t>(t)].first_scan <= scan) {
-    ++t;
+/// Per scan: its trajectory, counted by the starts at or before it (0 before the first start).
+std::vector<int> trajectory_of_scans(std::size_t scans,
+                                     const std::vector<TrajectoryStart>& starts) {
+  std::vector<int> out(scans, 0);
+  std::size_t t = 0;
+  for (std::size_t i = 0; i < scans; ++i) {
+    while (t < starts.size() && static_cast<std::size_t>(starts[t].first_scan) <= i) ++t;
+    out[i] = static_cast<int>(t);
   }
-  return t;
+  return out;
 }
 
 /// The coverage grid: every ray end and origin inside it.
@@ -68,6 +72,7 @@ SubmapTrim trim_covered_submaps(const std::vector<StampedScan>& scans,
   TESSERA_ASSERT(trajectory.size() == scans.size() && vertex_scan.size() == graph.poses.size() &&
                  options.cell_m > 0.0);
   const int newest = static_cast<int>(starts.size());
+  const std::vector<int> trajectory_of = trajectory_of_scans(scans.size(), starts);
   SubmapTrim out;
 
   // Nodes and their rays; submaps and the nodes inserted into them.
@@ -78,7 +83,10 @@ SubmapTrim trim_covered_submaps(const std::vector<StampedScan>& scans,
     const StampedScan& s = scans[static_cast<std::size_t>(vertex_scan[v])];
     const Pose2& T = graph.poses[v];
     const ScanPoints points = scan_to_points(s.scan, s.laser_in_robot, options.points);
-    NodeRays n{vertex_scan[v], trajectory_of(vertex_scan[v], starts), T * points.origin_m, {}};
+    NodeRays n{vertex_scan[v],
+               trajectory_of[static_cast<std::size_t>(vertex_scan[v])],
+               T * points.origin_m,
+               {}};
     n.ends_m.reserve(points.returns_m.size() + points.misses_m.size());
     for (const Vec2 p : points.returns_m) n.ends_m.push_back(T * p);
     for (const Vec2 p : points.misses_m) n.ends_m.push_back(T * p);
@@ -138,18 +146,10 @@ SubmapTrim trim_covered_submaps(const std::vector<StampedScan>& scans,
       });
     }
     // Fresh cells inside patches: all 8 neighbours fresh in this submap too.
+    const auto fresh_here = [&](Cell c) { return g.contains(c) && fresh_of[g.index_of(c)] == id; };
     std::size_t inside = 0;
-    for (const std::size_t i : fresh_cells) {
-      const Cell c = g.cell_of(i);
-      bool all = true;
-      for (int dy = -1; dy <= 1 && all; ++dy) {
-        for (int dx = -1; dx <= 1 && all; ++dx) {
-          const Cell n{c.x + dx, c.y + dy};
-          all = g.contains(n) && fresh_of[g.index_of(n)] == id;
-        }
-      }
-      inside += all ? 1 : 0;
-    }
+    for (const std::size_t i : fresh_cells)
+      inside += inside_region_8(g.cell_of(i), fresh_here) ? 1 : 0;
     const double share =
         observed == 0 ? 0.0
                       : static_cast<double>(fresh_cells.size()) / static_cast<double>(observed);
@@ -174,10 +174,13 @@ SubmapTrim trim_covered_submaps(const std::vector<StampedScan>& scans,
     });
     if (node_kept[k] == 0) ++out.nodes_trimmed;
   }
+  // The session's own first scan needs a start only when the session placed it (a trimmed
+  // session's): otherwise it starts where its odometry puts it, as it did.
+  const bool placed_first = !starts.empty() && starts.front().first_scan == 0;
   int previous_trajectory = -1;
   bool anchor_kept = true;
   for (int i = 0; i < static_cast<int>(scans.size()); ++i) {
-    const int t = trajectory_of(i, starts);
+    const int t = trajectory_of[static_cast<std::size_t>(i)];
     if (t != previous_trajectory) anchor_kept = true;  // before its first node: kept
     if (const int node = node_of_scan[static_cast<std::size_t>(i)]; node >= 0) {
       anchor_kept = node_kept[static_cast<std::size_t>(node)] != 0;
@@ -187,9 +190,6 @@ SubmapTrim trim_covered_submaps(const std::vector<StampedScan>& scans,
       const bool continues =
           !out.kept_scans.empty() && out.kept_scans.back() == i - 1 && t == previous_trajectory;
       const int index = static_cast<int>(out.kept_scans.size());
-      // The session's own first scan needs a start only when the session placed it (a
-      // trimmed session's): otherwise it starts where its odometry puts it, as it did.
-      const bool placed_first = !starts.empty() && starts.front().first_scan == 0;
       if (!continues && (i > 0 || placed_first)) {
         out.starts.push_back({index, trajectory[static_cast<std::size_t>(i)].pose});
       }
@@ -206,12 +206,12 @@ Result<TrimmedRun> trim_and_replay(const LaserLog& log, const std::vector<Trajec
   TrimmedRun out;
   out.trim = trim_covered_submaps(log.scans, result.trajectory, starts, result.graph,
                                   result.vertex_scan, trim_options);
+  if (out.trim.kept_scans.size() == log.scans.size()) return out;  // nothing to replay
   out.log.backward_stamps = log.backward_stamps;
   out.log.scans.reserve(out.trim.kept_scans.size());
   for (const int i : out.trim.kept_scans) {
     out.log.scans.push_back(log.scans[static_cast<std::size_t>(i)]);
   }
-  if (out.trim.kept_scans.size() == log.scans.size()) return out;
   Result<LaserSlamResult> replayed = run_laser_slam(out.log, options, out.trim.starts);
   if (!replayed) return replayed.error();
   out.result = std::move(replayed).value();

@@ -1,7 +1,8 @@
 #pragma once
 // Cell-level queries every ground truth answers the same way, whoever holds the solid cells (the
-// simulator's World, eval's TruthGrid): the cells a metric box overlaps, and the cells a robot
-// moving between 4-neighbours reaches from a start (the lecture robot's moves; BOBMapping's C).
+// simulator's World, eval's TruthGrid): the cells a metric box overlaps, whether a cell is well
+// inside a region, and the cells a robot moving between 4-neighbours reaches from a start (the
+// lecture robot's moves; BOBMapping's C).
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -39,6 +40,17 @@ template <class IsSolid>
     }
   }
   return false;
+}
+
+/// True when in(c) holds for c and its 8 neighbours: c lies well inside a region, not on its edge
+/// (a one-cell erosion of the region).
+template <class In>
+[[nodiscard]] bool inside_region_8(Cell c, const In& in) {
+  if (!in(c)) return false;
+  for (const Cell d : kNeighbors8) {
+    if (!in(c + d)) return false;
+  }
+  return true;
 }
 
 /// One byte per cell of g: 1 where a breadth-first flood fill over 4-neighbours from `start`

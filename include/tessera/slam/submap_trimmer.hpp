@@ -74,8 +74,8 @@ struct TrimmedRun {
 };
 
 /// Trims the run `result` of `log` with `starts` and replays what is kept with `options` (its
-/// progress callback reports the replay). The replay is skipped (result empty, log holding every
-/// scan) when nothing is trimmed. Errors as run_laser_slam's.
+/// progress callback reports the replay). When nothing is trimmed there is nothing to replay:
+/// log and result stay empty (the run as it is is the session). Errors as run_laser_slam's.
 [[nodiscard]] Result<TrimmedRun> trim_and_replay(const LaserLog& log,
                                                  const std::vector<TrajectoryStart>& starts,
                                                  const LaserSlamResult& result,

@@ -125,7 +125,7 @@ bob-firmware-test: bob-firmware
 
 # libFuzzer harnesses of the readers (fuzz/, docs/fuzzing.md): clang with ASan and UBSan, only the
 # readers and what they need. `make fuzz` runs each harness FUZZ_SECONDS on its corpus (JOBS at a
-# time); `make fuzz-smoke` runs each 30 s, two at a time (CI). Both fail when a harness finds a
+# time); `make fuzz-smoke` runs each 15 s, two at a time (CI). Both fail when a harness finds a
 # crash, a hang, a leak, a sanitizer report or an error that does not name the file.
 FUZZ_SECONDS ?= 600
 fuzz-build: deps
@@ -136,7 +136,7 @@ fuzz: fuzz-build
 	scripts/fuzz.sh $(FUZZ_SECONDS) $(JOBS)
 
 fuzz-smoke: fuzz-build
-	scripts/fuzz.sh 30 2
+	scripts/fuzz.sh 15 2
 
 # ThreadSanitizer (issue 17, docs/fuzzing.md): tessera's own code runs no thread (the live view is
 # driven by the run, decision 0020; Ceres runs with one thread), but OpenCV runs its TBB workers

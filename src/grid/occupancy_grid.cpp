@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <span>
 
 namespace tessera {
 
@@ -58,15 +59,18 @@ CellCounts OccupancyGrid::count_states(double occupied_threshold) const {
 
 OccupancyGrid known_part(const OccupancyGrid& map) {
   const GridGeometry& g = map.geometry();
+  const std::span<const std::uint8_t> known = map.known_flags();
+  const auto w = static_cast<std::size_t>(g.width());
   int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
   for (int y = 0; y < g.height(); ++y) {
-    for (int x = 0; x < g.width(); ++x) {
-      if (!map.known({x, y})) continue;
-      x0 = std::min(x0, x);
-      y0 = std::min(y0, y);
-      x1 = std::max(x1, x);
-      y1 = std::max(y1, y);
-    }
+    const auto row = known.subspan(static_cast<std::size_t>(y) * w, w);
+    const auto first = std::find(row.begin(), row.end(), std::uint8_t{1});
+    if (first == row.end()) continue;
+    const auto last = std::find(row.rbegin(), row.rend(), std::uint8_t{1});
+    x0 = std::min(x0, static_cast<int>(first - row.begin()));
+    x1 = std::max(x1, static_cast<int>(row.rend() - last) - 1);
+    y0 = std::min(y0, y);
+    y1 = y;
   }
   if (x1 < 0) return OccupancyGrid{};
   const double r = g.resolution_m();

@@ -1,7 +1,8 @@
 #include "tessera/record/ros_conversions.hpp"
 
 #include <cmath>
-#include <optional>
+#include <cstdint>
+#include <span>
 
 namespace tessera {
 
@@ -19,9 +20,12 @@ OccupancyGridMessage occupancy_grid_message(const OccupancyGrid& map, std::int64
   m.origin = planar_transform(g.origin().x, g.origin().y, 0.0);
   m.data.resize(g.size());
   // GridGeometry's index is ROS's: row-major from the origin cell, x along a row.
-  for (std::size_t i = 0; i < g.size(); ++i) {
-    const std::optional<double> p = map.probability_at(g.cell_of(i));
-    m.data[i] = p ? static_cast<std::int8_t>(std::lround(100.0 * *p)) : std::int8_t{-1};
+  const std::span<const float> log_odds = map.log_odds_values();
+  const std::span<const std::uint8_t> known = map.known_flags();
+  for (std::size_t i = 0; i < m.data.size(); ++i) {
+    // Percent rounded half up (p >= 0), as std::lround would, without its libm call per cell.
+    m.data[i] = known[i] ? static_cast<std::int8_t>(100.0 * probability(log_odds[i]) + 0.5)
+                         : std::int8_t{-1};
   }
   return m;
 }

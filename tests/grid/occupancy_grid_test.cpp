@@ -168,6 +168,10 @@ TEST(OccupancyGrid, KnownPartIsTheBoxOfTheKnownCellsInPlace) {
   EXPECT_FALSE(part.known({1, 1}));
   EXPECT_EQ(part.known_count(), 2u);
   EXPECT_EQ(known_part(OccupancyGrid(GridGeometry({0.0, 0.0}, 1.0, 3, 3))).geometry().size(), 0u);
+  // The box's sides come from different rows: the leftmost and rightmost known cells of any row.
+  g.set_probability({1, 4}, 0.5);
+  g.set_probability({9, 4}, 0.5);
+  EXPECT_EQ(known_part(g).geometry(), GridGeometry({-0.5, 3.0}, 0.5, 9, 4));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,10 @@ class OccupancyGrid {
   [[nodiscard]] std::size_t known_count() const;
   /// Cells per state of the threshold view state(c, occupied_threshold). Cost: O(cells).
   [[nodiscard]] CellCounts count_states(double occupied_threshold = 0.5) const;
+  /// Every cell's log-odds and known flag in index_of order (row-major), for whole-map passes
+  /// such as a message conversion, without a bounds check per cell.
+  [[nodiscard]] std::span<const float> log_odds_values() const { return log_odds_; }
+  [[nodiscard]] std::span<const std::uint8_t> known_flags() const { return known_; }
   /// Bytes the cells take (5 per cell).
   [[nodiscard]] std::size_t memory_bytes() const {
     return log_odds_.size() * sizeof(float) + known_.size();

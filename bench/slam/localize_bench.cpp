@@ -225,10 +225,10 @@ int run(int argc, char** argv) {
     std::printf(
         "  start %.1f s: confident pose after %.1f s; map share %.2f; first pose after %.1f s, "
         "%.2f m / %.1f deg off, map share %.2f; searches %d: no match %d, unfit %d, see through "
-        "%d, ambiguous %d, unconfirmed %d\n",
+        "%d, ambiguous %d, unconfirmed %d, newest scan alone %d\n",
         rest[first].t_s - t0, found_after_s.value_or(NAN), map_share[first],
         posed_after_s.value_or(NAN), posed.m, posed.deg, posed_share, st.searches, st.no_match,
-        st.unfit, st.see_through, st.ambiguous, st.unconfirmed);
+        st.unfit, st.see_through, st.ambiguous, st.unconfirmed, st.newest_scan_only);
     if (found_after_s && !wrong_here && *found_after_s <= 5.0) ++found;
     times.push_back(found_after_s.value_or(INFINITY));
   }

@@ -122,6 +122,7 @@ struct Localizer::Impl {
     int matches = 0;
   };
   std::optional<Candidate> candidate;
+  double fit_now = 0.0;  // the current scan's fit_of on the mapped cells (0 without a match)
 
   /// Tracks the scan from the prior; fills `out` (state kTracking). Returns whether the map
   /// contradicts the pose: enough of the scan falls on known cells, and those points do not land
@@ -135,6 +136,7 @@ struct Localizer::Impl {
     out.covariance = covariance_of(refined, points.size());
     const MapFit f = fit_of(out.T_map_robot, points);
     out.map_share = f.map_share;
+    fit_now = f.fit;
     return f.map_share >= options.min_map_share && f.fit < options.min_tracking_score;
   }
 
@@ -202,16 +204,17 @@ struct Localizer::Impl {
     }
   }
 
-  /// The share of the view's free space that the map, with the view at T_map_view, calls wall:
+  /// The share of a view's free space that the map, with `view_map` at T_map_view, calls wall:
   /// of the view's free cells well inside its free space (all eight neighbours free too, so a
   /// cell's offset along a wall does not count) that fall on cells the map knows, those where
   /// the map is occupied. Seeing through where the map has a wall contradicts a pose even
   /// where every return lands on a wall; a mirrored place in the building does exactly that.
-  [[nodiscard]] double free_space_conflict(const Pose2& T_map_view) const {
-    const GridGeometry& v = view_grid.geometry();
+  [[nodiscard]] double free_space_conflict(const ProbabilityGrid& view_map,
+                                           const Pose2& T_map_view) const {
+    const GridGeometry& v = view_map.geometry();
     const GridGeometry& g = map.geometry();
     const auto free = [&](Cell c) {
-      return v.contains(c) && view_grid.known(c) && view_grid.probability(c) < 0.5f;
+      return v.contains(c) && view_map.known(c) && view_map.probability(c) < 0.5f;
     };
     int on_map = 0, conflicts = 0;
     for (int y = 1; y + 1 < v.height(); ++y) {
@@ -226,6 +229,15 @@ struct Localizer::Impl {
     return on_map == 0 ? 0.0 : static_cast<double>(conflicts) / static_cast<double>(on_map);
   }
 
+  /// The newest scan alone as a view: its points and its free space in its own frame.
+  [[nodiscard]] ProbabilityGrid newest_scan_grid() const {
+    const double res = map.geometry().resolution_m();
+    const int side = static_cast<int>(std::ceil(20.0 / res));
+    ProbabilityGrid grid(GridGeometry({-10.0, -10.0}, res, side, side));
+    RangeInserter(options.view_insert).insert(grid, Pose2{}, view.back().points);
+    return grid;
+  }
+
   /// The view's points in the frame of its newest scan.
   [[nodiscard]] std::vector<Vec2> view_points() const {
     std::vector<Vec2> all;
@@ -237,78 +249,121 @@ struct Localizer::Impl {
     return all;
   }
 
+  [[nodiscard]] Pose2 search_centre() const {
+    return {0.5 * (known_lo.x + known_hi.x), 0.5 * (known_lo.y + known_hi.y), 0.0};
+  }
+  [[nodiscard]] SearchWindow search_window() const {
+    const double res = map.geometry().resolution_m();
+    return {0.5 * std::max(known_hi.x - known_lo.x, known_hi.y - known_lo.y) + res, kPi};
+  }
+
+  /// How a search for one view ended: no pose good enough, a best pose that does not fit the map
+  /// once refined, one that sees through the map's walls, or a pose (yet to be judged against
+  /// the other places').
+  enum class Outcome { kNoMatch, kUnfit, kSeeThrough, kPlaced };
+  struct Placement {
+    Outcome outcome = Outcome::kNoMatch;
+    ScanMatch best;
+    RefinedPose refined;
+    MapFit fit;
+    std::vector<Vec2> search_points, refine_points;
+  };
+
+  /// Searches `points` (in the newest scan's frame) over the whole map and a full turn, and
+  /// judges the best pose; `free_view` is the view's grid, T_robot_view its frame seen from the
+  /// newest scan.
+  [[nodiscard]] Placement place(const std::vector<Vec2>& points, const ProbabilityGrid& free_view,
+                                const Pose2& T_robot_view) const {
+    Placement p;
+    p.search_points = adaptive_voxel_filter(points, options.search_points);
+    const std::optional<ScanMatch> best = search.match(
+        search_centre(), p.search_points, search_window(), options.min_relocalize_score);
+    if (!best) return p;
+    p.best = *best;
+    p.refine_points = voxel_filter(points, options.refine_voxel_m);
+    // The refinement may only polish the searched pose (the loop closer's weak ties).
+    p.refined = refine_scan(map, best->T_grid_robot, best->T_grid_robot, p.refine_points,
+                            {1.0, 1.0, 1.0, 20});
+    const double shift_m =
+        (p.refined.T_grid_robot.translation() - best->T_grid_robot.translation()).norm();
+    p.fit = fit_of(p.refined.T_grid_robot, p.refine_points);
+    if (p.fit.map_share < options.min_map_share || p.fit.fit < options.min_relocalize_score ||
+        shift_m > 2.0 * map.geometry().resolution_m()) {
+      p.outcome = Outcome::kUnfit;
+    } else if (free_space_conflict(free_view, p.refined.T_grid_robot * T_robot_view) >
+               options.max_free_conflict) {
+      p.outcome = Outcome::kSeeThrough;
+    } else {
+      p.outcome = Outcome::kPlaced;
+    }
+    return p;
+  }
+
   /// The global search over the whole map and a full turn; fills `out` when the best pose is
   /// good enough and clearly better than every other place's.
   void relocalize(LocalizedScan& out) {
     const auto t0 = std::chrono::steady_clock::now();
     ++stats.searches;
-    const std::vector<Vec2> all = view_points();
-    const std::vector<Vec2> search_points = adaptive_voxel_filter(all, options.search_points);
-    const std::vector<Vec2> refine_points = voxel_filter(all, options.refine_voxel_m);
-    const double res = map.geometry().resolution_m();
-    const Pose2 centre{0.5 * (known_lo.x + known_hi.x), 0.5 * (known_lo.y + known_hi.y), 0.0};
-    const SearchWindow whole{0.5 * std::max(known_hi.x - known_lo.x, known_hi.y - known_lo.y) + res,
-                             kPi};
-    const std::optional<ScanMatch> best =
-        search.match(centre, search_points, whole, options.min_relocalize_score);
-    if (best) {
-      // The refinement may only polish the searched pose (the loop closer's weak ties).
-      const RefinedPose refined = refine_scan(map, best->T_grid_robot, best->T_grid_robot,
-                                              refine_points, {1.0, 1.0, 1.0, 20});
-      const double shift_m =
-          (refined.T_grid_robot.translation() - best->T_grid_robot.translation()).norm();
-      const MapFit f = fit_of(refined.T_grid_robot, refine_points);
-      const bool fits = f.map_share >= options.min_map_share &&
-                        f.fit >= options.min_relocalize_score && shift_m <= 2.0 * res;
-      const bool sees_through =
-          fits && free_space_conflict(refined.T_grid_robot * view.back().T_view_robot.inverse()) >
-                      options.max_free_conflict;
-      stats.unfit += fits ? 0 : 1;
-      stats.see_through += sees_through ? 1 : 0;
-      if (fits && !sees_through) {
-        // The runner-up: the best pose of any other place, which must score clearly less, both
-        // counted above what a view that sees nothing of the map scores (unknown_score: "the
-        // robot is somewhere the map does not show" is always an answer).
-        const double floor = options.unknown_score;
-        ExcludedPoses others = options.distinct;
-        others.around = best->T_grid_robot;
-        const std::optional<ScanMatch> runner_up =
-            search.match(centre, search_points, whole,
-                         floor + options.ambiguity_ratio * (best->score - floor), others);
-        // The view's frame in the map, as this match places it: the next search must agree.
-        const Pose2 T_map_view = refined.T_grid_robot * view.back().T_view_robot.inverse();
-        bool agrees = false;
-        if (!runner_up && candidate) {
-          const Pose2 d =
-              between(candidate->T_map_view * view.back().T_view_robot, refined.T_grid_robot);
-          agrees = std::hypot(d.x, d.y) <= options.agreement.linear_m &&
-                   std::abs(d.theta) <= options.agreement.angular_rad;
-        }
-        if (runner_up) {
-          ++stats.ambiguous;
-        } else if (agrees) {
-          candidate->T_map_view = T_map_view;
-          ++candidate->matches;
-        } else {
-          candidate = Candidate{T_map_view, 1};
-        }
-        if (!runner_up && candidate->matches < options.confirmations) ++stats.unconfirmed;
-        if (!runner_up && candidate->matches >= options.confirmations) {
-          ++stats.relocalizations;
-          out.state = LocalizationState::kRelocalized;
-          out.T_map_robot = refined.T_grid_robot;
-          out.score = std::clamp(refined.mean_probability, kMinProbability, kMaxProbability);
-          out.map_share = f.map_share;
-          out.covariance = covariance_of(refined, refine_points.size());
-        }
+    // The scans of the view are joined by odometry and matching against each other; where that
+    // goes wrong (fast turns, Intel's odometry, or the robot came from where the map does not
+    // reach) the joined view fits nowhere although the newest scan fits the map. Then the newest
+    // scan alone is searched, and its own free space is what may not see through the map's walls.
+    Placement p = place(view_points(), view_grid, view.back().T_view_robot.inverse());
+    if (p.outcome != Outcome::kPlaced && view.size() > 1) {
+      const ProbabilityGrid alone = newest_scan_grid();
+      Placement q = place(view.back().points.returns_m, alone, Pose2{});
+      if (q.outcome == Outcome::kPlaced) {
+        ++stats.newest_scan_only;
+        p = std::move(q);
       }
     }
-    stats.no_match += best ? 0 : 1;
+    stats.no_match += p.outcome == Outcome::kNoMatch ? 1 : 0;
+    stats.unfit += p.outcome == Outcome::kUnfit ? 1 : 0;
+    stats.see_through += p.outcome == Outcome::kSeeThrough ? 1 : 0;
+    if (p.outcome == Outcome::kPlaced) {
+      // The runner-up: the best pose of any other place, which must score clearly less, both
+      // counted above what a view that sees nothing of the map scores (unknown_score: "the
+      // robot is somewhere the map does not show" is always an answer).
+      const double floor = options.unknown_score;
+      ExcludedPoses others = options.distinct;
+      others.around = p.best.T_grid_robot;
+      const std::optional<ScanMatch> runner_up =
+          search.match(search_centre(), p.search_points, search_window(),
+                       floor + options.ambiguity_ratio * (p.best.score - floor), others);
+      // The view's frame in the map, as this match places it: the next search must agree.
+      const Pose2 T_map_view = p.refined.T_grid_robot * view.back().T_view_robot.inverse();
+      bool agrees = false;
+      if (!runner_up && candidate) {
+        const Pose2 d =
+            between(candidate->T_map_view * view.back().T_view_robot, p.refined.T_grid_robot);
+        agrees = std::hypot(d.x, d.y) <= options.agreement.linear_m &&
+                 std::abs(d.theta) <= options.agreement.angular_rad;
+      }
+      if (runner_up) {
+        ++stats.ambiguous;
+      } else if (agrees) {
+        candidate->T_map_view = T_map_view;
+        ++candidate->matches;
+      } else {
+        candidate = Candidate{T_map_view, 1};
+      }
+      if (!runner_up && candidate->matches < options.confirmations) ++stats.unconfirmed;
+      if (!runner_up && candidate->matches >= options.confirmations) {
+        ++stats.relocalizations;
+        out.state = LocalizationState::kRelocalized;
+        out.T_map_robot = p.refined.T_grid_robot;
+        out.score = std::clamp(p.refined.mean_probability, kMinProbability, kMaxProbability);
+        out.map_share = p.fit.map_share;
+        fit_now = p.fit.fit;
+        out.covariance = covariance_of(p.refined, p.refine_points.size());
+      }
+    }
     stats.search_s += seconds_since(t0);
   }
 
   LocalizedScan add_scan(const StampedScan& scan) {
     ++stats.scans;
+    fit_now = 0.0;
     LocalizedScan out;
     out.t_s = scan.t_s;
     out.score = kMinProbability;
@@ -359,8 +414,11 @@ struct Localizer::Impl {
       }
     }
     if (out.state != LocalizationState::kLost) ++stats.tracked;
+    // Judged on the part of the scan the map knows: points beyond the map count as unlikely in
+    // the score, and a robot that sees half beyond the session's map is still well placed by the
+    // half it shares.
     out.confident = out.state != LocalizationState::kLost && !unexplained_since_s &&
-                    out.score >= options.min_tracking_score;
+                    out.map_share >= options.min_map_share && fit_now >= options.min_tracking_score;
     return out;
   }
 };

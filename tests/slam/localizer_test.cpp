@@ -93,6 +93,51 @@ TEST(Localizer, FindsARobotWithNoInitialPoseAndIsNeverConfidentlyWrong) {
   EXPECT_GE(found, 3);
 }
 
+/// Scans of a bare 6 m x 4 m room at 5 Hz for `duration_s`.
+SimulatedLaserRun bare_room_run(double duration_s) {
+  std::vector<std::string> rows(40, "#" + std::string(58, '.') + "#");
+  rows.front() = rows.back() = std::string(60, '#');
+  LaserRunOptions o;
+  o.lidar.max_range_m = 10.0;
+  o.scan_rate_hz = 5.0;
+  o.max_duration_s = duration_s;
+  Result<SimulatedLaserRun> run = simulate_laser_run(support::text_world(rows, 0.1), o, 5);
+  EXPECT_TRUE(run.ok()) << run.error().message;
+  return std::move(run).value();
+}
+
+// The robot starts in a room the session never mapped and then is in the office (as if it drove
+// through a door). For 3 s the view joins the room's scans to the office's and fits nowhere; the
+// newest scan alone fits the map, so the robot is found within a second of reaching the office,
+// not once the room has left the view, and never confidently wrong.
+TEST(Localizer, AViewThatFitsNowhereIsPlacedByItsNewestScan) {
+  const SimulatedLaserRun room = bare_room_run(2.0);
+  const SimulatedLaserRun office = office_run(21, 6.0);
+  const LocalizerOptions options;
+  Localizer localizer(office_map(), options);
+  for (const StampedScan& scan : room.log.scans) {
+    EXPECT_FALSE(localizer.add_scan(scan).confident);
+  }
+  const Pose2 T_odom_jump =
+      room.log.scans.back().odometry * office.log.scans.front().odometry.inverse();
+  const double t0 = room.log.scans.back().t_s + 0.2;
+  std::optional<double> found_after_s;
+  for (std::size_t i = 0; i < office.log.scans.size(); ++i) {
+    StampedScan scan = office.log.scans[i];
+    scan.t_s += t0;
+    scan.odometry = T_odom_jump * scan.odometry;
+    const LocalizedScan s = localizer.add_scan(scan);
+    if (!s.confident) continue;
+    const PoseError e = error_of(s.T_map_robot, office.truth[i].pose);
+    EXPECT_LT(e.m, 0.1) << "scan " << i;
+    EXPECT_LT(e.rad, deg_to_rad(3.0)) << "scan " << i;
+    if (!found_after_s) found_after_s = s.t_s - t0;
+  }
+  ASSERT_TRUE(found_after_s.has_value());
+  EXPECT_LE(*found_after_s, 1.5);
+  EXPECT_GT(localizer.stats().newest_scan_only, 0);
+}
+
 TEST(Localizer, AKidnappedRobotIsLostAndFoundAgain) {
   // The robot drives 10 s, then its scans are another run's, elsewhere in the office; its
   // odometry goes on as if nothing happened.

@@ -48,8 +48,8 @@ struct LocalizerOptions {
   /// of it) stays below min_tracking_score: they lie in the map's free space, not on its walls
   /// (walls are near kMaxProbability = 0.9, free space at kMinProbability = 0.1; half way). Points
   /// beyond the map are no evidence either way: a robot driving where the session never went
-  /// keeps tracking on what it sees of the map and on odometry. min_tracking_score is also the
-  /// confidence (LocalizedScan::score) below which a pose is not to be trusted.
+  /// keeps tracking on what it sees of the map and on odometry. The same two figures make a pose
+  /// confident (LocalizedScan::confident): min_map_share on the map, fitting it this well.
   double min_tracking_score = 0.5;
   double min_map_share = 0.3;
   /// Tracking is lost after this many seconds of data in which every scan contradicted it.
@@ -111,9 +111,12 @@ struct LocalizedScan {
   /// Mean probability of the scan's points in the map at the pose (kMinProbability when lost):
   /// the confidence that the pose explains the scan.
   double score = 0.0;
-  /// The pose is to be trusted: it has a pose, its score reaches min_tracking_score, and no scan
-  /// since the last one the map explained has contradicted it (right after a kidnapping the
-  /// tracked pose is wrong until the loss is declared; it is not confident meanwhile).
+  /// The pose is to be trusted: it has a pose, at least min_map_share of the scan falls on cells
+  /// the map knows and fits them (mean probability there at least min_tracking_score, as tracking
+  /// judges a contradiction), and no scan since the last one the map explained has contradicted
+  /// it (right after a kidnapping the tracked pose is wrong until the loss is declared; it is not
+  /// confident meanwhile). A robot that sees half beyond the session's map is confident on the
+  /// half it shares; one where the session never went is not.
   bool confident = false;
   /// The share of the scan's points on cells the map knows (0 when lost): low where the robot
   /// sees beyond the session's map.
@@ -134,6 +137,7 @@ struct LocalizerStats {
   int unfit = 0;            // best poses refused on map share, fit or refinement shift
   int see_through = 0;      // best poses refused because the view sees through the map's walls
   int unconfirmed = 0;      // clear best poses waiting for the next search to agree
+  int newest_scan_only = 0;  // searches whose view fitted nowhere, matched by its newest scan
   int losses = 0;           // times tracking was lost after having a pose
   double tracking_s = 0.0;  // wall time of tracking
   double search_s = 0.0;    // wall time of global searches

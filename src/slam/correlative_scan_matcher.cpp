@@ -221,11 +221,12 @@ struct BranchAndBoundMatcher::Search {
   [[nodiscard]] bool is_excluded(const Candidate& c) const {
     if (!excluded) return false;
     const double res = matcher.geometry_.resolution_m();
-    const double dx = prior.x + c.x * res - excluded->around.x;
-    const double dy = prior.y + c.y * res - excluded->around.y;
-    const double dtheta = normalize_angle(prior.theta + angles[static_cast<std::size_t>(c.angle)] -
-                                          excluded->around.theta);
-    return std::hypot(dx, dy) <= excluded->linear_m && std::abs(dtheta) <= excluded->angular_rad;
+    const double x = prior.x + c.x * res, y = prior.y + c.y * res;
+    const double theta = prior.theta + angles[static_cast<std::size_t>(c.angle)];
+    return std::any_of(excluded->around.begin(), excluded->around.end(), [&](const Pose2& p) {
+      return std::hypot(x - p.x, y - p.y) <= excluded->linear_m &&
+             std::abs(normalize_angle(theta - p.theta)) <= excluded->angular_rad;
+    });
   }
 
   static void sort(std::vector<Candidate>& candidates) {

@@ -55,6 +55,9 @@ std::optional<std::string> validate(const LocalizerOptions& o) {
   if (!(o.min_relocalize_score > kMinProbability && o.min_relocalize_score < kMaxProbability)) {
     return "min_relocalize_score must be in (0.1, 0.9)";
   }
+  if (!(o.min_search_score > kMinProbability && o.min_search_score < kMaxProbability)) {
+    return "min_search_score must be in (0.1, 0.9)";
+  }
   if (!(o.unknown_score >= kMinProbability && o.unknown_score <= kMaxProbability)) {
     return "unknown_score must be in [0.1, 0.9]";
   }
@@ -62,6 +65,7 @@ std::optional<std::string> validate(const LocalizerOptions& o) {
     return "ambiguity_ratio must be in (0, 1]";
   }
   if (o.confirmations < 1) return "confirmations must be >= 1";
+  if (o.max_runner_ups < 0) return "max_runner_ups must be >= 0";
   if (!(o.max_free_conflict >= 0.0 && o.max_free_conflict <= 1.0)) {
     return "max_free_conflict must be in [0, 1]";
   }
@@ -122,7 +126,6 @@ struct Localizer::Impl {
     int matches = 0;
   };
   std::optional<Candidate> candidate;
-  double fit_now = 0.0;  // the current scan's fit_of on the mapped cells (0 without a match)
 
   /// Tracks the scan from the prior; fills `out` (state kTracking). Returns whether the map
   /// contradicts the pose: enough of the scan falls on known cells, and those points do not land
@@ -136,7 +139,6 @@ struct Localizer::Impl {
     out.covariance = covariance_of(refined, points.size());
     const MapFit f = fit_of(out.T_map_robot, points);
     out.map_share = f.map_share;
-    fit_now = f.fit;
     return f.map_share >= options.min_map_share && f.fit < options.min_tracking_score;
   }
 
@@ -267,36 +269,63 @@ struct Localizer::Impl {
     RefinedPose refined;
     MapFit fit;
     std::vector<Vec2> search_points, refine_points;
+    const ProbabilityGrid* free_view = nullptr;  // the view's grid (its free space)
+    Pose2 T_robot_view;                          // the view's frame seen from the newest scan
+    ExcludedPoses passed_over;                   // rivals' search: the places already judged
   };
 
-  /// Searches `points` (in the newest scan's frame) over the whole map and a full turn, and
-  /// judges the best pose; `free_view` is the view's grid, T_robot_view its frame seen from the
-  /// newest scan.
-  [[nodiscard]] Placement place(const std::vector<Vec2>& points, const ProbabilityGrid& free_view,
-                                const Pose2& T_robot_view) const {
-    Placement p;
-    p.search_points = adaptive_voxel_filter(points, options.search_points);
-    const std::optional<ScanMatch> best = search.match(
-        search_centre(), p.search_points, search_window(), options.min_relocalize_score);
-    if (!best) return p;
-    p.best = *best;
-    p.refine_points = voxel_filter(points, options.refine_voxel_m);
+  /// Judges a searched pose of p's points: refined, does it fit the map, and does the view see
+  /// through the map's walls there? Sets p's best, refined, fit and outcome.
+  void judge(const ScanMatch& match, Placement& p) const {
+    p.best = match;
     // The refinement may only polish the searched pose (the loop closer's weak ties).
-    p.refined = refine_scan(map, best->T_grid_robot, best->T_grid_robot, p.refine_points,
+    p.refined = refine_scan(map, match.T_grid_robot, match.T_grid_robot, p.refine_points,
                             {1.0, 1.0, 1.0, 20});
     const double shift_m =
-        (p.refined.T_grid_robot.translation() - best->T_grid_robot.translation()).norm();
+        (p.refined.T_grid_robot.translation() - match.T_grid_robot.translation()).norm();
     p.fit = fit_of(p.refined.T_grid_robot, p.refine_points);
     if (p.fit.map_share < options.min_map_share || p.fit.fit < options.min_relocalize_score ||
         shift_m > 2.0 * map.geometry().resolution_m()) {
       p.outcome = Outcome::kUnfit;
-    } else if (free_space_conflict(free_view, p.refined.T_grid_robot * T_robot_view) >
+    } else if (free_space_conflict(*p.free_view, p.refined.T_grid_robot * p.T_robot_view) >
                options.max_free_conflict) {
       p.outcome = Outcome::kSeeThrough;
     } else {
       p.outcome = Outcome::kPlaced;
     }
+  }
+
+  /// Searches `points` (in the newest scan's frame) over the whole map and a full turn, and
+  /// judges the best pose.
+  [[nodiscard]] Placement place(const std::vector<Vec2>& points, const ProbabilityGrid& free_view,
+                                const Pose2& T_robot_view) const {
+    Placement p;
+    p.search_points = adaptive_voxel_filter(points, options.search_points);
+    p.refine_points = voxel_filter(points, options.refine_voxel_m);
+    p.free_view = &free_view;
+    p.T_robot_view = T_robot_view;
+    const std::optional<ScanMatch> best =
+        search.match(search_centre(), p.search_points, search_window(), options.min_search_score);
+    if (best) judge(*best, p);
     return p;
+  }
+
+  /// The best pose of any other place than p's scoring at least `min_score`. A place where the
+  /// view would see through the map's walls is no rival (it would be refused as the best pose
+  /// too): it is passed over for the next (at most max_runner_ups of them). Two look-alike places
+  /// that differ in what stands in the open are told apart so. Nullopt when there is none.
+  [[nodiscard]] std::optional<ScanMatch> runner_up(const Placement& p, double min_score) const {
+    Placement rival = p;
+    rival.passed_over = options.distinct;
+    rival.passed_over.around = {p.best.T_grid_robot};
+    for (int n = 0;; ++n) {
+      const std::optional<ScanMatch> other = search.match(
+          search_centre(), p.search_points, search_window(), min_score, rival.passed_over);
+      if (!other) return std::nullopt;
+      judge(*other, rival);
+      if (rival.outcome != Outcome::kSeeThrough || n == options.max_runner_ups) return other;
+      rival.passed_over.around.push_back(other->T_grid_robot);
+    }
   }
 
   /// The global search over the whole map and a full turn; fills `out` when the best pose is
@@ -309,9 +338,10 @@ struct Localizer::Impl {
     // reach) the joined view fits nowhere although the newest scan fits the map. Then the newest
     // scan alone is searched, and its own free space is what may not see through the map's walls.
     Placement p = place(view_points(), view_grid, view.back().T_view_robot.inverse());
+    std::optional<ProbabilityGrid> alone;  // outlives p when p is the newest scan's
     if (p.outcome != Outcome::kPlaced && view.size() > 1) {
-      const ProbabilityGrid alone = newest_scan_grid();
-      Placement q = place(view.back().points.returns_m, alone, Pose2{});
+      alone = newest_scan_grid();
+      Placement q = place(view.back().points.returns_m, *alone, Pose2{});
       if (q.outcome == Outcome::kPlaced) {
         ++stats.newest_scan_only;
         p = std::move(q);
@@ -325,21 +355,18 @@ struct Localizer::Impl {
       // counted above what a view that sees nothing of the map scores (unknown_score: "the
       // robot is somewhere the map does not show" is always an answer).
       const double floor = options.unknown_score;
-      ExcludedPoses others = options.distinct;
-      others.around = p.best.T_grid_robot;
-      const std::optional<ScanMatch> runner_up =
-          search.match(search_centre(), p.search_points, search_window(),
-                       floor + options.ambiguity_ratio * (p.best.score - floor), others);
+      const std::optional<ScanMatch> other =
+          runner_up(p, floor + options.ambiguity_ratio * (p.best.score - floor));
       // The view's frame in the map, as this match places it: the next search must agree.
       const Pose2 T_map_view = p.refined.T_grid_robot * view.back().T_view_robot.inverse();
       bool agrees = false;
-      if (!runner_up && candidate) {
+      if (!other && candidate) {
         const Pose2 d =
             between(candidate->T_map_view * view.back().T_view_robot, p.refined.T_grid_robot);
         agrees = std::hypot(d.x, d.y) <= options.agreement.linear_m &&
                  std::abs(d.theta) <= options.agreement.angular_rad;
       }
-      if (runner_up) {
+      if (other) {
         ++stats.ambiguous;
       } else if (agrees) {
         candidate->T_map_view = T_map_view;
@@ -347,14 +374,13 @@ struct Localizer::Impl {
       } else {
         candidate = Candidate{T_map_view, 1};
       }
-      if (!runner_up && candidate->matches < options.confirmations) ++stats.unconfirmed;
-      if (!runner_up && candidate->matches >= options.confirmations) {
+      if (!other && candidate->matches < options.confirmations) ++stats.unconfirmed;
+      if (!other && candidate->matches >= options.confirmations) {
         ++stats.relocalizations;
         out.state = LocalizationState::kRelocalized;
         out.T_map_robot = p.refined.T_grid_robot;
         out.score = std::clamp(p.refined.mean_probability, kMinProbability, kMaxProbability);
         out.map_share = p.fit.map_share;
-        fit_now = p.fit.fit;
         out.covariance = covariance_of(p.refined, p.refine_points.size());
       }
     }
@@ -363,7 +389,6 @@ struct Localizer::Impl {
 
   LocalizedScan add_scan(const StampedScan& scan) {
     ++stats.scans;
-    fit_now = 0.0;
     LocalizedScan out;
     out.t_s = scan.t_s;
     out.score = kMinProbability;
@@ -414,11 +439,8 @@ struct Localizer::Impl {
       }
     }
     if (out.state != LocalizationState::kLost) ++stats.tracked;
-    // Judged on the part of the scan the map knows: points beyond the map count as unlikely in
-    // the score, and a robot that sees half beyond the session's map is still well placed by the
-    // half it shares.
     out.confident = out.state != LocalizationState::kLost && !unexplained_since_s &&
-                    out.map_share >= options.min_map_share && fit_now >= options.min_tracking_score;
+                    out.score >= options.min_tracking_score;
     return out;
   }
 };

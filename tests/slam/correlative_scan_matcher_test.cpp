@@ -98,7 +98,7 @@ TEST(BranchAndBoundMatcher, ExcludedPosesAreNeverReturned) {
   const SearchWindow window{1.0, std::numbers::pi};
   const std::optional<ScanMatch> best = matcher.match(s.truth, s.points, window, 0.3);
   ASSERT_TRUE(best.has_value());
-  const ExcludedPoses around_best{best->T_grid_robot, 0.3, 0.2};
+  const ExcludedPoses around_best{{best->T_grid_robot}, 0.3, 0.2};
   const std::optional<ScanMatch> other = matcher.match(s.truth, s.points, window, 0.2, around_best);
   ASSERT_TRUE(other.has_value());
   const bool outside =
@@ -107,7 +107,17 @@ TEST(BranchAndBoundMatcher, ExcludedPosesAreNeverReturned) {
       std::abs(normalize_angle(other->T_grid_robot.theta - best->T_grid_robot.theta)) > 0.2;
   EXPECT_TRUE(outside);
   EXPECT_LT(other->score, best->score);
-  const ExcludedPoses far_away{{50.0, 50.0, 0.0}, 0.3, 0.2};
+  // Excluding the runner-up too finds a third place, no better than the runner-up.
+  ExcludedPoses both = around_best;
+  both.around.push_back(other->T_grid_robot);
+  const std::optional<ScanMatch> third = matcher.match(s.truth, s.points, window, 0.1, both);
+  ASSERT_TRUE(third.has_value());
+  for (const Pose2& p : both.around) {
+    EXPECT_TRUE(std::hypot(third->T_grid_robot.x - p.x, third->T_grid_robot.y - p.y) > 0.3 ||
+                std::abs(normalize_angle(third->T_grid_robot.theta - p.theta)) > 0.2);
+  }
+  EXPECT_LE(third->score, other->score);
+  const ExcludedPoses far_away{{{50.0, 50.0, 0.0}}, 0.3, 0.2};
   const std::optional<ScanMatch> same = matcher.match(s.truth, s.points, window, 0.3, far_away);
   ASSERT_TRUE(same.has_value());
   EXPECT_DOUBLE_EQ(same->score, best->score);

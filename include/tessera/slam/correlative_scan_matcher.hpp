@@ -61,11 +61,12 @@ struct SearchWindow {
   double angular_rad = 3.14159265358979323846;
 };
 
-/// Poses a search skips: those within linear_m (in the plane) and angular_rad of `around`. A
-/// search that excludes the best pose's neighbourhood finds the best pose of another place, the
-/// runner-up that tells whether the best is clearly best (global relocalization).
+/// Poses a search skips: those within linear_m (in the plane) and angular_rad of any pose in
+/// `around`. A search that excludes the best pose's neighbourhood finds the best pose of another
+/// place, the runner-up that tells whether the best is clearly best (global relocalization);
+/// excluding that one too finds the next.
 struct ExcludedPoses {
-  Pose2 around;
+  std::vector<Pose2> around;
   double linear_m = 1.0;
   double angular_rad = 0.5;
 };

@@ -93,15 +93,30 @@ TEST(Localizer, FindsARobotWithNoInitialPoseAndIsNeverConfidentlyWrong) {
   EXPECT_GE(found, 3);
 }
 
-/// Scans of a bare 6 m x 4 m room at 5 Hz for `duration_s`.
-SimulatedLaserRun bare_room_run(double duration_s) {
+/// The rows of a 6 m x 4 m room (text_world, 0.1 m cells). A bare one is the same turned by half
+/// a turn; an L-shaped one (a 1.9 m x 1.5 m block in one corner) has no symmetry.
+std::vector<std::string> room_rows(bool l_shaped) {
   std::vector<std::string> rows(40, "#" + std::string(58, '.') + "#");
   rows.front() = rows.back() = std::string(60, '#');
+  if (l_shaped) {
+    for (int y = 1; y <= 15; ++y) rows[static_cast<std::size_t>(y)].replace(40, 19, 19, '#');
+  }
+  return rows;
+}
+
+/// The room runs' lidar and pace: 10 m range, 5 scans per second, `duration_s` long.
+LaserRunOptions room_run_options(double duration_s) {
   LaserRunOptions o;
   o.lidar.max_range_m = 10.0;
   o.scan_rate_hz = 5.0;
   o.max_duration_s = duration_s;
-  Result<SimulatedLaserRun> run = simulate_laser_run(support::text_world(rows, 0.1), o, 5);
+  return o;
+}
+
+/// Scans of the bare room for `duration_s`.
+SimulatedLaserRun bare_room_run(double duration_s) {
+  Result<SimulatedLaserRun> run = simulate_laser_run(support::text_world(room_rows(false), 0.1),
+                                                     room_run_options(duration_s), 5);
   EXPECT_TRUE(run.ok()) << run.error().message;
   return std::move(run).value();
 }
@@ -182,18 +197,10 @@ TEST(Localizer, AKidnappedRobotIsLostAndFoundAgain) {
 TEST(Localizer, ASymmetricRoomIsNeverClaimed) {
   // A bare rectangle looks the same turned by half a turn: two places explain every scan, so no
   // search may accept one.
-  std::vector<std::string> rows(40, "#" + std::string(58, '.') + "#");
-  rows.front() = rows.back() = std::string(60, '#');
-  const World room = support::text_world(rows, 0.1);
-  LaserRunOptions o;
-  o.lidar.max_range_m = 10.0;
-  o.scan_rate_hz = 5.0;
-  o.max_duration_s = 20.0;
-  Result<SimulatedLaserRun> run = simulate_laser_run(room, o, 5);
-  ASSERT_TRUE(run.ok()) << run.error().message;
+  const SimulatedLaserRun run = bare_room_run(20.0);
   const LocalizerOptions options;
-  Localizer localizer(map_at_truth(*run), options);
-  for (const StampedScan& scan : run->log.scans) {
+  Localizer localizer(map_at_truth(run), options);
+  for (const StampedScan& scan : run.log.scans) {
     EXPECT_EQ(localizer.add_scan(scan).state, LocalizationState::kLost);
   }
   EXPECT_GT(localizer.stats().searches, 0);
@@ -206,15 +213,8 @@ TEST(Localizer, AViewThatSeesThroughTheMapsWallsIsRefused) {
   // place whose walls fit the returns but stand in the view's free space). The returns still fit
   // the room's walls best, unambiguously: only the free-space test refuses the place, and with
   // that test switched off the same search accepts it.
-  std::vector<std::string> rows(40, "#" + std::string(58, '.') + "#");
-  rows.front() = rows.back() = std::string(60, '#');
-  for (int y = 1; y <= 15; ++y) rows[static_cast<std::size_t>(y)].replace(40, 19, 19, '#');
-  const World room = support::text_world(rows, 0.1);
-  LaserRunOptions o;
-  o.lidar.max_range_m = 10.0;
-  o.scan_rate_hz = 5.0;
-  o.max_duration_s = 10.0;
-  Result<SimulatedLaserRun> run = simulate_laser_run(room, o, 7);
+  Result<SimulatedLaserRun> run =
+      simulate_laser_run(support::text_world(room_rows(true), 0.1), room_run_options(10.0), 7);
   ASSERT_TRUE(run.ok()) << run.error().message;
   LocalizerOptions options;
   ProbabilityGrid map = map_at_truth(*run);
@@ -258,16 +258,10 @@ TEST(Localizer, AViewThatSeesThroughTheMapsWallsIsRefused) {
 // see through it, that place is passed over, and the robot is found in the left room at once.
 // Without passing over (max_runner_ups = 0) the block changes nothing: still ambiguous.
 TEST(Localizer, LookAlikeRoomsAreToldApartByWhatStandsInTheOpen) {
-  std::vector<std::string> l_room(40, "#" + std::string(58, '.') + "#");
-  l_room.front() = l_room.back() = std::string(60, '#');
-  for (int y = 1; y <= 15; ++y) l_room[static_cast<std::size_t>(y)].replace(40, 19, 19, '#');
   std::vector<std::string> rows;
-  for (const std::string& r : l_room) rows.push_back(r + r);
+  for (const std::string& r : room_rows(true)) rows.push_back(r + r);
   const World world = support::text_world(rows, 0.1);
-  LaserRunOptions o;
-  o.lidar.max_range_m = 10.0;
-  o.scan_rate_hz = 5.0;
-  o.max_duration_s = 10.0;
+  const LaserRunOptions o = room_run_options(10.0);
   // The simulator starts every run in the left room; the right one is mapped by the same scans
   // placed 6 m to the right.
   Result<SimulatedLaserRun> mapping = simulate_laser_run(world, o, 1);

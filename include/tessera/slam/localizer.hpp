@@ -16,7 +16,9 @@
 //    (ambiguity_ratio). A corridor or a row of equal offices stays ambiguous until the view holds
 //    what tells them apart; the localizer then keeps waiting instead of guessing. Nor may the
 //    view see open space where the map has walls (a mirrored place fits the returns but not the
-//    free space between them).
+//    free space between them); a rival place that does is no rival. When the joined view is not
+//    placed, the newest scan alone is searched: a wrong join spoils the view, not the scan
+//    (decision 0030).
 //
 // Everything runs on the calling thread; the result depends only on the map, the scans and the
 // options.

@@ -196,10 +196,7 @@ struct Localizer::Impl {
     }
     const RangeInserter inserter(options.view_insert);
     if (dropped || view.size() == 1) {
-      const double res = map.geometry().resolution_m();
-      const Pose2& T = view.front().T_view_robot;
-      const int side = static_cast<int>(std::ceil(20.0 / res));
-      view_grid = ProbabilityGrid(GridGeometry({T.x - 10.0, T.y - 10.0}, res, side, side));
+      view_grid = view_sized_grid(view.front().T_view_robot.translation());
       for (const ViewScan& v : view) inserter.insert(view_grid, v.T_view_robot, v.points);
     } else {
       inserter.insert(view_grid, view.back().T_view_robot, view.back().points);
@@ -231,11 +228,16 @@ struct Localizer::Impl {
     return on_map == 0 ? 0.0 : static_cast<double>(conflicts) / static_cast<double>(on_map);
   }
 
-  /// The newest scan alone as a view: its points and its free space in its own frame.
-  [[nodiscard]] ProbabilityGrid newest_scan_grid() const {
+  /// An empty 20 m square at the map's resolution centred on `centre`: room for a view's scans.
+  [[nodiscard]] ProbabilityGrid view_sized_grid(const Vec2& centre) const {
     const double res = map.geometry().resolution_m();
     const int side = static_cast<int>(std::ceil(20.0 / res));
-    ProbabilityGrid grid(GridGeometry({-10.0, -10.0}, res, side, side));
+    return ProbabilityGrid(GridGeometry({centre.x - 10.0, centre.y - 10.0}, res, side, side));
+  }
+
+  /// The newest scan alone as a view: its points and its free space in its own frame.
+  [[nodiscard]] ProbabilityGrid newest_scan_grid() const {
+    ProbabilityGrid grid = view_sized_grid({0.0, 0.0});
     RangeInserter(options.view_insert).insert(grid, Pose2{}, view.back().points);
     return grid;
   }
@@ -263,36 +265,41 @@ struct Localizer::Impl {
   /// once refined, one that sees through the map's walls, or a pose (yet to be judged against
   /// the other places').
   enum class Outcome { kNoMatch, kUnfit, kSeeThrough, kPlaced };
-  struct Placement {
+  /// A searched pose, refined and judged.
+  struct Judgement {
     Outcome outcome = Outcome::kNoMatch;
-    ScanMatch best;
     RefinedPose refined;
     MapFit fit;
+  };
+  /// A view searched over the whole map: its points, its free space, and its best pose judged.
+  struct Placement {
     std::vector<Vec2> search_points, refine_points;
     const ProbabilityGrid* free_view = nullptr;  // the view's grid (its free space)
     Pose2 T_robot_view;                          // the view's frame seen from the newest scan
-    ExcludedPoses passed_over;                   // rivals' search: the places already judged
+    ScanMatch best;
+    Judgement judged;
   };
 
-  /// Judges a searched pose of p's points: refined, does it fit the map, and does the view see
-  /// through the map's walls there? Sets p's best, refined, fit and outcome.
-  void judge(const ScanMatch& match, Placement& p) const {
-    p.best = match;
+  /// Judges a searched pose of p's view: refined, does it fit the map, and does the view see
+  /// through the map's walls there?
+  [[nodiscard]] Judgement judge(const ScanMatch& match, const Placement& p) const {
+    Judgement j;
     // The refinement may only polish the searched pose (the loop closer's weak ties).
-    p.refined = refine_scan(map, match.T_grid_robot, match.T_grid_robot, p.refine_points,
+    j.refined = refine_scan(map, match.T_grid_robot, match.T_grid_robot, p.refine_points,
                             {1.0, 1.0, 1.0, 20});
     const double shift_m =
-        (p.refined.T_grid_robot.translation() - match.T_grid_robot.translation()).norm();
-    p.fit = fit_of(p.refined.T_grid_robot, p.refine_points);
-    if (p.fit.map_share < options.min_map_share || p.fit.fit < options.min_relocalize_score ||
+        (j.refined.T_grid_robot.translation() - match.T_grid_robot.translation()).norm();
+    j.fit = fit_of(j.refined.T_grid_robot, p.refine_points);
+    if (j.fit.map_share < options.min_map_share || j.fit.fit < options.min_relocalize_score ||
         shift_m > 2.0 * map.geometry().resolution_m()) {
-      p.outcome = Outcome::kUnfit;
-    } else if (free_space_conflict(*p.free_view, p.refined.T_grid_robot * p.T_robot_view) >
+      j.outcome = Outcome::kUnfit;
+    } else if (free_space_conflict(*p.free_view, j.refined.T_grid_robot * p.T_robot_view) >
                options.max_free_conflict) {
-      p.outcome = Outcome::kSeeThrough;
+      j.outcome = Outcome::kSeeThrough;
     } else {
-      p.outcome = Outcome::kPlaced;
+      j.outcome = Outcome::kPlaced;
     }
+    return j;
   }
 
   /// Searches `points` (in the newest scan's frame) over the whole map and a full turn, and
@@ -306,7 +313,10 @@ struct Localizer::Impl {
     p.T_robot_view = T_robot_view;
     const std::optional<ScanMatch> best =
         search.match(search_centre(), p.search_points, search_window(), options.min_search_score);
-    if (best) judge(*best, p);
+    if (best) {
+      p.best = *best;
+      p.judged = judge(*best, p);
+    }
     return p;
   }
 
@@ -315,16 +325,16 @@ struct Localizer::Impl {
   /// too): it is passed over for the next (at most max_runner_ups of them). Two look-alike places
   /// that differ in what stands in the open are told apart so. Nullopt when there is none.
   [[nodiscard]] std::optional<ScanMatch> runner_up(const Placement& p, double min_score) const {
-    Placement rival = p;
-    rival.passed_over = options.distinct;
-    rival.passed_over.around = {p.best.T_grid_robot};
+    ExcludedPoses seen = options.distinct;
+    seen.around = {p.best.T_grid_robot};
     for (int n = 0;; ++n) {
-      const std::optional<ScanMatch> other = search.match(
-          search_centre(), p.search_points, search_window(), min_score, rival.passed_over);
-      if (!other) return std::nullopt;
-      judge(*other, rival);
-      if (rival.outcome != Outcome::kSeeThrough || n == options.max_runner_ups) return other;
-      rival.passed_over.around.push_back(other->T_grid_robot);
+      const std::optional<ScanMatch> other =
+          search.match(search_centre(), p.search_points, search_window(), min_score, seen);
+      if (!other || n == options.max_runner_ups ||
+          judge(*other, p).outcome != Outcome::kSeeThrough) {
+        return other;
+      }
+      seen.around.push_back(other->T_grid_robot);
     }
   }
 
@@ -339,18 +349,18 @@ struct Localizer::Impl {
     // scan alone is searched, and its own free space is what may not see through the map's walls.
     Placement p = place(view_points(), view_grid, view.back().T_view_robot.inverse());
     std::optional<ProbabilityGrid> alone;  // outlives p when p is the newest scan's
-    if (p.outcome != Outcome::kPlaced && view.size() > 1) {
+    if (p.judged.outcome != Outcome::kPlaced && view.size() > 1) {
       alone = newest_scan_grid();
       Placement q = place(view.back().points.returns_m, *alone, Pose2{});
-      if (q.outcome == Outcome::kPlaced) {
+      if (q.judged.outcome == Outcome::kPlaced) {
         ++stats.newest_scan_only;
         p = std::move(q);
       }
     }
-    stats.no_match += p.outcome == Outcome::kNoMatch ? 1 : 0;
-    stats.unfit += p.outcome == Outcome::kUnfit ? 1 : 0;
-    stats.see_through += p.outcome == Outcome::kSeeThrough ? 1 : 0;
-    if (p.outcome == Outcome::kPlaced) {
+    stats.no_match += p.judged.outcome == Outcome::kNoMatch ? 1 : 0;
+    stats.unfit += p.judged.outcome == Outcome::kUnfit ? 1 : 0;
+    stats.see_through += p.judged.outcome == Outcome::kSeeThrough ? 1 : 0;
+    if (p.judged.outcome == Outcome::kPlaced) {
       // The runner-up: the best pose of any other place, which must score clearly less, both
       // counted above what a view that sees nothing of the map scores (unknown_score: "the
       // robot is somewhere the map does not show" is always an answer).
@@ -358,11 +368,11 @@ struct Localizer::Impl {
       const std::optional<ScanMatch> other =
           runner_up(p, floor + options.ambiguity_ratio * (p.best.score - floor));
       // The view's frame in the map, as this match places it: the next search must agree.
-      const Pose2 T_map_view = p.refined.T_grid_robot * view.back().T_view_robot.inverse();
+      const Pose2 T_map_view = p.judged.refined.T_grid_robot * view.back().T_view_robot.inverse();
       bool agrees = false;
       if (!other && candidate) {
-        const Pose2 d =
-            between(candidate->T_map_view * view.back().T_view_robot, p.refined.T_grid_robot);
+        const Pose2 d = between(candidate->T_map_view * view.back().T_view_robot,
+                                p.judged.refined.T_grid_robot);
         agrees = std::hypot(d.x, d.y) <= options.agreement.linear_m &&
                  std::abs(d.theta) <= options.agreement.angular_rad;
       }
@@ -378,10 +388,10 @@ struct Localizer::Impl {
       if (!other && candidate->matches >= options.confirmations) {
         ++stats.relocalizations;
         out.state = LocalizationState::kRelocalized;
-        out.T_map_robot = p.refined.T_grid_robot;
-        out.score = std::clamp(p.refined.mean_probability, kMinProbability, kMaxProbability);
-        out.map_share = p.fit.map_share;
-        out.covariance = covariance_of(p.refined, p.refine_points.size());
+        out.T_map_robot = p.judged.refined.T_grid_robot;
+        out.score = std::clamp(p.judged.refined.mean_probability, kMinProbability, kMaxProbability);
+        out.map_share = p.judged.fit.map_share;
+        out.covariance = covariance_of(p.judged.refined, p.refine_points.size());
       }
     }
     stats.search_s += seconds_since(t0);

@@ -13,9 +13,11 @@ usage: scripts/fusion_table.py [--tessera build/dev/apps/tessera/tessera] [--see
                                [--runs 1] [--features orb sift akaze] [--out out/fusion-table]
                                [--doc docs/fusion-teach-and-repeat.md] [--mapping]
                                [--appendix] [--drop-frames P] [--photos N]
+                               [--candidates cells|whole-map] [--match-gate on|off]
 --appendix prints the thesis' Appendix B and C figures of the runs instead (docs/fusion-claims.md);
 --drop-frames and --photos test the thesis' claims that the map needs no continuous stream of
-images and is not misled by repeated landmarks (issue 18 item 11).
+images and is not misled by repeated landmarks (issue 18 item 11); --candidates and --match-gate
+take the cells or our graph gate away, to see which of the two keeps repeated landmarks out.
 """
 import argparse
 import json
@@ -48,9 +50,12 @@ BARS = ("Bars (issue 5): goal cell reached on every run; final error <= 0.1 m; p
 # Extra arguments for every run (--drop-frames) and the poster photo folder (--photos N).
 EXTRA = []
 TEXTURES = [PHOTOS]
+# --keep-going: runs that failed (tessera exit 4, e.g. a drive that never arrives), as
+# "world seed: message", listed under the table instead of stopping it.
+FAILED = []
 
 
-def run(tessera, out_root, world, features, seed, runs, reuse, mapping=False):
+def run(tessera, out_root, world, features, seed, runs, reuse, mapping=False, keep_going=False):
     label, args = world
     out = out_root / f"{label.split()[0].lower()}_{features}_{seed}"
     if reuse and (out / "report.json").exists():
@@ -63,6 +68,9 @@ def run(tessera, out_root, world, features, seed, runs, reuse, mapping=False):
                                                    "--textures", str(TEXTURES[0]),
                                                    "--out", str(out)] + args + EXTRA
     proc = subprocess.run(cmd, capture_output=True, text=True)
+    if proc.returncode == 4 and keep_going:
+        FAILED.append(f"{label} seed {seed}: {proc.stderr.strip()}")
+        return None
     if proc.returncode != 0:
         sys.exit(f"{' '.join(cmd)}: exit {proc.returncode}: {proc.stderr.strip()}")
     with open(out / "report.json") as f:
@@ -155,10 +163,17 @@ def main():
                     help="lose each frame the SLAM asks for with this probability")
     ap.add_argument("--photos", type=int, default=0,
                     help="hang only the first N photos (repeated posters everywhere)")
+    ap.add_argument("--candidates", default="cells", choices=["cells", "whole-map"],
+                    help="match candidates from the cells (the thesis) or the whole map")
+    ap.add_argument("--match-gate", default="on", choices=["on", "off"],
+                    help="refuse matches that disagree with the pose graph (ours) or not")
+    ap.add_argument("--keep-going", action="store_true",
+                    help="list runs that fail at run time under the table instead of stopping")
     args = ap.parse_args()
     out_root = pathlib.Path(args.out)
     if args.drop_frames > 0.0:
         EXTRA.extend(["--drop-frames", str(args.drop_frames)])
+    EXTRA.extend(["--candidates", args.candidates, "--match-gate", args.match_gate])
     if args.photos > 0:  # a folder of links to the first N photos, beside the runs
         few = out_root / f"photos_{args.photos}"
         few.mkdir(parents=True, exist_ok=True)
@@ -183,16 +198,20 @@ def main():
         lines.append("| World | Seed | Run | Route (m) | Reached | Err x (m) | Err y (m) | Err (m) | "
                      "Nav. distance (m) | Path ratio | ATE corrected (m) | ATE odometry (m) | "
                      "Odometry / corrected | Odometry error at goal (m) | Node search | Nodes | "
-                     "Cells | Matches acc. / rej. |")
-        lines.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+                     "Cells | Matches acc. / rej. | Wrong matches (max error, m) |")
+        lines.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         t = totals.setdefault(features, {"runs": 0, "reached": 0, "max_err": 0.0, "max_ratio": 0.0,
                                          "min_ate": float("inf"), "trials": 0, "found": 0,
-                                         "ex": [], "ey": []})
+                                         "ex": [], "ey": [], "accepted": 0, "wrong": 0,
+                                         "max_match_err": 0.0, "ate": []})
         for world in WORLDS:
             for seed in args.seeds:
                 reuse = "only" if args.reuse_only else args.reuse
-                report = run(args.tessera, out_root, world, features, seed, args.runs, reuse)
+                failed_before = len(FAILED)
+                report = run(args.tessera, out_root, world, features, seed, args.runs, reuse,
+                             keep_going=args.keep_going)
                 if report is None:
+                    t["runs"] += args.runs * (len(FAILED) - failed_before)  # none reached
                     continue
                 for k, r in enumerate(report["teach_and_repeat"]["runs"]):
                     t["runs"] += 1
@@ -204,6 +223,10 @@ def main():
                     t["found"] += r["search_successes"]
                     t["ex"].append(abs(r["final_error_x_m"]))
                     t["ey"].append(abs(r["final_error_y_m"]))
+                    t["accepted"] += r["matches_accepted"]
+                    t["wrong"] += r["wrong_matches"]
+                    t["max_match_err"] = max(t["max_match_err"], r["max_match_error_m"])
+                    t["ate"].append(r["ate_corrected_m"])
                     lines.append(
                         f"| {world[0]} | {seed} | {k + 1} | {r['taught_route_length_m']:.2f} | "
                         f"{'yes' if r['reached_goal_cell'] else 'NO'} | "
@@ -213,23 +236,30 @@ def main():
                         f"{r['ate_odometry_m']:.3f} | {r['ate_ratio']:.1f} | "
                         f"{r['odometry_error_at_goal_m']:.2f} | "
                         f"{r['search_successes']}/{r['search_trials']} | {r['image_nodes']} | "
-                        f"{r['cells']} | {r['matches_accepted']} / {r['matches_rejected']} |")
+                        f"{r['cells']} | {r['matches_accepted']} / {r['matches_rejected']} | "
+                        f"{r['wrong_matches']} ({r['max_match_error_m']:.2f}) |")
         lines.append("")
 
     lines.append("### Summary per feature type (as the thesis' Table 5.4)")
     lines.append("")
     lines.append("| Features | Runs | Goal cell reached | Mean abs. err x (m) | Mean abs. err y (m) | "
                  "Max final error (m) | Max path ratio | Min odometry / corrected ATE | "
-                 "Node search |")
-    lines.append("|---|---|---|---|---|---|---|---|---|")
+                 "Node search | ATE corrected, mean / max (m) | Matches accepted | Wrong matches "
+                 "(max error, m) |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for features, t in totals.items():
         n = max(1, len(t["ex"]))
         share = 100.0 * t["found"] / max(1, t["trials"])
         lines.append(f"| {features.upper()} | {t['runs']} | {t['reached']}/{t['runs']} | "
                      f"{sum(t['ex']) / n:.3f} | {sum(t['ey']) / n:.3f} | {t['max_err']:.3f} | "
                      f"{t['max_ratio']:.3f} | {t['min_ate']:.1f} | {t['found']}/{t['trials']} "
-                     f"({share:.0f} %) |")
+                     f"({share:.0f} %) | {sum(t['ate']) / n:.3f} / {max(t['ate'], default=0.0):.3f} | "
+                     f"{t['accepted']} | {t['wrong']} ({t['max_match_err']:.2f}) |")
     lines.append("")
+    if FAILED:
+        lines.append(f"Failed runs ({len(FAILED)}), not in the table:")
+        lines.extend(f"- {f}" for f in FAILED)
+        lines.append("")
     lines.append(BARS)
     text = "\n".join(lines) + "\n"
     print(text, end="")

@@ -98,6 +98,17 @@ FusionCommand::FusionCommand(CLI::App& app) {
                    "(everything within 1 m at up to 90 degrees) or off")
       ->capture_default_str()
       ->check(CLI::IsMember({"strip", "thesis", "off"}));
+  sub_->add_option("--candidates", options_.candidates,
+                   "--world, --teach-and-repeat: match a new image node against the nodes of its "
+                   "own and neighbouring cells (cells, the thesis) or against nodes drawn at "
+                   "random from the whole map (whole-map, as an RGB-D SLAM without cells)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cells", "whole-map"}));
+  sub_->add_option("--match-gate", options_.match_gate,
+                   "--world, --teach-and-repeat: refuse a match that disagrees with the pose graph "
+                   "by over 1 m or 0.5 rad (on, ours) or keep every match (off, the thesis)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
   sub_->add_option("--route-length-m", options_.route_length_m,
                    "Route length wanted when the goal is chosen (the thesis' route: 9.7 m)")
       ->capture_default_str()

@@ -44,7 +44,9 @@ nlohmann::json FusionCommand::simulated_options_json(const SimulatedSetup& setup
           {"navigation", options_.navigation},
           {"drop_frames", options_.drop_frames},
           {"obstacles", options_.obstacles},
-          {"avoidance", options_.obstacles > 0 ? options_.avoidance : "none"}};
+          {"avoidance", options_.obstacles > 0 ? options_.avoidance : "none"},
+          {"candidates", options_.candidates},
+          {"match_gate", options_.match_gate}};
 }
 
 nlohmann::json FusionCommand::world_json(const World& world) const {
@@ -82,6 +84,10 @@ Result<FusionCommand::SimulatedSetup> FusionCommand::load_simulated_setup() cons
   options.slam.seed = options_.seed;
   if (options_.navigation == "thesis") options.navigation = RepeatNavigation::kThesisGreedy;
   options.frame_drop_probability = options_.drop_frames;
+  if (options_.candidates == "whole-map") {
+    options.slam.candidate_search = fusion::CandidateSearch::kWholeMap;
+  }
+  options.slam.match_gate = options_.match_gate == "on";
   if (options_.obstacles > 0) {
     ObstacleCourseOptions course;
     course.obstacles = options_.obstacles;

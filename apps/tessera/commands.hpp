@@ -349,6 +349,10 @@ class FusionCommand : public Command {
     double drop_frames = 0.0;         // the probability that a frame the SLAM asks for is lost
     std::string navigation = "ours";  // ours (polyline + pure pursuit) or thesis (greedy)
     std::string avoidance = "strip";  // strip (ours), thesis or off
+    // The ablation of the cells' claim (issue 18 item 11): where match candidates come from and
+    // whether a match must agree with the graph (fusion/fusion_slam.hpp).
+    std::string candidates = "cells";  // cells (the thesis) or whole-map (Endres et al. 2014)
+    std::string match_gate = "on";     // on (ours) or off (the thesis)
     double duration_s = 600.0;        // --world: the mapping run's time limit
     std::optional<std::filesystem::path> save_sequence;  // --world: the run as a TUM folder
     OutputStreams streams;                               // --world, --sequence: --record, --serve

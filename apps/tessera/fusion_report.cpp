@@ -86,6 +86,8 @@ nlohmann::json run_json(const TeachAndRepeatRun& r) {
                         {"ate_corrected_m", r.ate_corrected_m},
                         {"ate_odometry_m", r.ate_odometry_m},
                         {"ate_ratio", r.ate_ratio},
+                        {"wrong_matches", r.wrong_matches},
+                        {"max_match_error_m", r.max_match_error_m},
                         {"search_trials", r.search_trials},
                         {"search_successes", r.search_successes},
                         {"searches", searches},

@@ -123,4 +123,11 @@ Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajecto
   return m;
 }
 
+std::size_t relations_off_by_more_than(const RelationMetric& m, double max_trans_m,
+                                       double max_rot_rad) {
+  return static_cast<std::size_t>(std::count_if(
+      m.errors.begin(), m.errors.end(),
+      [&](const RelationError& e) { return e.trans_m > max_trans_m || e.rot_rad > max_rot_rad; }));
+}
+
 }  // namespace tessera

@@ -60,7 +60,10 @@ std::optional<std::string> validate(const FusionSlamOptions& o) {
 }
 
 FusionSlam::FusionSlam(FusionSlamOptions options)
-    : options_(std::move(options)), map_(options_.map), rng_(options_.seed) {
+    : options_(std::move(options)),
+      map_(options_.map),
+      rng_(options_.seed),
+      sample_rng_(Rng(options_.seed).fork(1)) {
   TESSERA_ASSERT(!validate(options_));
 }
 
@@ -204,6 +207,73 @@ bool FusionSlam::optimise() {
   return true;
 }
 
+std::vector<std::size_t> FusionSlam::match_candidates(std::size_t cell, std::size_t graph_node,
+                                                      const Pose2& pose, double neck_rad) {
+  const double heading = camera_heading(pose, neck_rad);
+  // Views taken at this very pose (a neck scan) constrain nothing between poses; opposite views
+  // share no features.
+  const auto usable = [&](std::size_t id) {
+    const NodePlacement& p = nodes_[id].node.placement;
+    return nodes_[id].graph_node != graph_node &&
+           std::abs(normalize_angle(camera_heading(p.T_map_robot, p.neck_rad) - heading)) <=
+               options_.candidate_max_heading_difference_rad;
+  };
+  const auto distance = [&](std::size_t id) {
+    const Pose2& p = nodes_[id].node.placement.T_map_robot;
+    return std::hypot(p.x - pose.x, p.y - pose.y);
+  };
+  // The recent nodes, and for kCells the nodes of the current and neighbouring cells (thesis
+  // 4.3.1: search by cell), nearest first.
+  std::vector<std::size_t> pool;
+  if (options_.candidate_search == CandidateSearch::kCells) {
+    std::vector<std::size_t> cells = map_.geometric_neighbors(cell);
+    cells.push_back(cell);
+    for (std::size_t c : cells) {
+      for (std::size_t id : map_.cell(c).image_nodes) pool.push_back(id);
+    }
+  }
+  for (std::size_t k = 0;
+       k < static_cast<std::size_t>(options_.recent_candidates) && k < nodes_.size(); ++k) {
+    pool.push_back(nodes_.size() - 1 - k);
+  }
+  std::sort(pool.begin(), pool.end());
+  pool.erase(std::unique(pool.begin(), pool.end()), pool.end());
+  std::vector<std::pair<double, std::size_t>> ranked;
+  for (std::size_t id : pool) {
+    if (usable(id)) ranked.emplace_back(distance(id), id);
+  }
+  std::sort(ranked.begin(), ranked.end());
+  const auto max_candidates = static_cast<std::size_t>(options_.max_candidates);
+  if (ranked.size() > max_candidates) ranked.resize(max_candidates);
+  std::vector<std::size_t> chosen;
+  for (const auto& r : ranked) chosen.push_back(r.second);
+  if (options_.candidate_search == CandidateSearch::kWholeMap) {
+    // Endres et al. 2014: keyframes drawn at random from the whole graph, without replacement.
+    std::vector<std::size_t> rest;
+    for (std::size_t id = 0; id < nodes_.size(); ++id) {
+      if (usable(id) && std::find(chosen.begin(), chosen.end(), id) == chosen.end()) {
+        rest.push_back(id);
+      }
+    }
+    for (std::size_t k = 0; k < max_candidates && !rest.empty(); ++k) {
+      const auto pick =
+          static_cast<std::size_t>(sample_rng_.uniform_int(0, static_cast<int>(rest.size()) - 1));
+      chosen.push_back(rest[pick]);
+      rest[pick] = rest.back();
+      rest.pop_back();
+    }
+  }
+  return chosen;
+}
+
+std::vector<Relation> FusionSlam::match_relations() const {
+  std::vector<Relation> out;
+  for (const Edge& e : edges_) {
+    if (e.match) out.push_back({graph_[e.from].t_s, graph_[e.to].t_s, e.measurement});
+  }
+  return out;
+}
+
 FusionCapture FusionSlam::add_frame(const RgbdFrame& frame, double neck_rad) {
   TESSERA_ASSERT(started_);
   FusionCapture out;
@@ -226,39 +296,7 @@ FusionCapture FusionSlam::add_frame(const RgbdFrame& frame, double neck_rad) {
   created.node.t_s = t_s_;
   const std::size_t graph_node = current_graph_node();
 
-  // Candidates: the recent nodes and the nodes of the current and neighbouring cells whose
-  // camera faces roughly the same way, nearest first (thesis 4.3.1: search by cell).
-  std::vector<std::size_t> cells = map_.geometric_neighbors(cell);
-  cells.push_back(cell);
-  std::vector<std::size_t> candidates;
-  for (std::size_t c : cells) {
-    for (std::size_t id : map_.cell(c).image_nodes) candidates.push_back(id);
-  }
-  for (std::size_t k = 0; k < static_cast<std::size_t>(options_.recent_candidates) && k < nodes_.size();
-       ++k) {
-    candidates.push_back(nodes_.size() - 1 - k);
-  }
-  std::sort(candidates.begin(), candidates.end());
-  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  const double heading = camera_heading(pose, neck_rad);
-  std::vector<std::pair<double, std::size_t>> ranked;
-  for (std::size_t id : candidates) {
-    // Views taken at this very pose (a neck scan) constrain nothing between poses.
-    if (nodes_[id].graph_node == graph_node) continue;
-    const NodePlacement& p = nodes_[id].node.placement;
-    if (std::abs(normalize_angle(camera_heading(p.T_map_robot, p.neck_rad) - heading)) >
-        options_.candidate_max_heading_difference_rad) {
-      continue;
-    }
-    ranked.emplace_back(std::hypot(p.T_map_robot.x - pose.x, p.T_map_robot.y - pose.y), id);
-  }
-  std::sort(ranked.begin(), ranked.end());
-  if (ranked.size() > static_cast<std::size_t>(options_.max_candidates)) {
-    ranked.resize(static_cast<std::size_t>(options_.max_candidates));
-  }
-  std::vector<std::size_t> chosen;
-  for (const auto& r : ranked) chosen.push_back(r.second);
-
+  const std::vector<std::size_t> chosen = match_candidates(cell, graph_node, pose, neck_rad);
   for (std::size_t id : chosen) {
     const StoredImageNode& stored = nodes_[id];
     ++stats_.matches_tried;
@@ -270,8 +308,9 @@ FusionCapture FusionSlam::add_frame(const RgbdFrame& frame, double neck_rad) {
       if (rel) {
         const Pose2 predicted = between(poses_[stored.graph_node], poses_[graph_node]);
         const Pose2 innovation = between(predicted, *rel);
-        if (std::hypot(innovation.x, innovation.y) > options_.max_match_innovation_m ||
-            std::abs(innovation.theta) > options_.max_match_innovation_rad) {
+        if (options_.match_gate &&
+            (std::hypot(innovation.x, innovation.y) > options_.max_match_innovation_m ||
+             std::abs(innovation.theta) > options_.max_match_innovation_rad)) {
           record.reason = "inconsistent with the graph";
         } else {
           record.accepted = true;

@@ -12,6 +12,7 @@
 #include "tessera/core/angle.hpp"
 #include "tessera/eval/drift_correction.hpp"
 #include "tessera/eval/heading_reversals.hpp"
+#include "tessera/eval/relation_metric.hpp"
 #include "tessera/nav/cell_polyline.hpp"
 #include "tessera/nav/greedy_cell_controller.hpp"
 #include "tessera/nav/wavefront.hpp"
@@ -675,6 +676,17 @@ void TeachAndRepeat::finish() {
   run_.ate_odometry_m =
       score ? score->odometry.trans_m.rmse : std::numeric_limits<double>::quiet_NaN();
   run_.ate_ratio = score ? score->odometry_over_slam() : 0.0;
+  // Loop closures (thesis chapter 6: ambiguous images cause wrong ones): each match's claim
+  // against the true motion between its stamps.
+  const std::vector<Relation> claims = slam.match_relations();
+  if (!claims.empty()) {
+    if (const Result<RelationMetric> m = relation_metric(x.truth_log(), claims)) {
+      run_.wrong_matches = static_cast<int>(relations_off_by_more_than(*m));
+      for (const RelationError& e : m->errors) {
+        run_.max_match_error_m = std::max(run_.max_match_error_m, e.trans_m);
+      }
+    }
+  }
   run_.cells = slam.map().cell_count();
   run_.goal_cell_image_nodes = slam.nodes_in_cell(run_.goal_cell).size();
   run_.image_nodes = slam.image_nodes().size();

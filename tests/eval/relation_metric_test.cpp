@@ -121,6 +121,21 @@ TEST(RelationMetric, RotationErrorOfAKnownTurn) {
   EXPECT_NEAR(m->rot_sq_mean_rad2, 0.01, 1e-12);
 }
 
+TEST(RelationMetric, CountsTheRelationsOffByMoreThanEitherBound) {
+  // The true path (1 m along x, then 1 m more), scored against three claimed loop closures: one
+  // right, one 0.5 m off, one 0.3 rad off (a poster matched to its copy elsewhere, say).
+  const std::vector<StampedPose2> truth = {
+      {0.0, {0.0, 0.0, 0.0}}, {1.0, {1.0, 0.0, 0.0}}, {2.0, {2.0, 0.0, 0.0}}};
+  const std::vector<Relation> claims = {
+      {0.0, 1.0, {1.01, 0.0, 0.0}}, {0.0, 2.0, {1.5, 0.0, 0.0}}, {1.0, 2.0, {1.0, 0.0, 0.3}}};
+  const Result<RelationMetric> m = relation_metric(truth, claims);
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  EXPECT_EQ(relations_off_by_more_than(*m), 2u);
+  EXPECT_EQ(relations_off_by_more_than(*m, 0.6, 0.1), 1u);  // only the turned one
+  EXPECT_EQ(relations_off_by_more_than(*m, 0.6, 0.4), 0u);
+  EXPECT_EQ(relations_off_by_more_than(*m, 0.005, 0.4), 3u);  // the 1 cm one counts too
+}
+
 TEST(RelationMetric, ErrorComposesInKummerleOrder) {
   // The estimate moves (1, 0, 0) in its own frame while heading pi/2 in the world. Relation
   // (2, 0, 0.5), whose inverse is (-2 cos 0.5, 2 sin 0.5, -0.5):

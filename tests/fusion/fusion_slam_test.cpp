@@ -79,6 +79,59 @@ TEST(FusionSlam, ABlankWallIsNeverANodeOrAMatch) {
   EXPECT_EQ(slam.match_edges(), 0u);
 }
 
+// The same view captured again where odometry says the robot is 5 m away (far beyond the first
+// node's neighbouring cells, with recent nodes left out): the thesis' search by cell never
+// compares the two; a whole-map search does, and then only the graph gate stands between the
+// match and the graph (issue 18 item 11's ablation).
+struct FarCopy {
+  FusionCapture second;
+  std::size_t match_edges = 0;
+  std::vector<Relation> relations;
+};
+FarCopy capture_the_same_view_far_away(CandidateSearch search, bool gate) {
+  const RgbdCamera camera = support::room_camera();
+  Rng rng(3);
+  const Pose2 truth{4.0, 2.25, 0.0};  // facing the east poster
+  FusionSlamOptions options;
+  options.recent_candidates = 0;
+  options.candidate_search = search;
+  options.match_gate = gate;
+  FusionSlam slam(options);
+  (void)slam.update(0.0, truth, 0.0);
+  const FusionCapture first = slam.add_frame(camera.render(truth, 0.0, 0.0, rng));
+  EXPECT_TRUE(first.stored);
+  for (int i = 1; i <= 100; ++i) (void)slam.update(0.1 * i, {4.0 - 0.05 * i, 2.25, 0.0}, 0.0);
+  FarCopy out;
+  out.second = slam.add_frame(camera.render(truth, 0.0, 10.0, rng));
+  EXPECT_TRUE(out.second.stored);
+  out.match_edges = slam.match_edges();
+  out.relations = slam.match_relations();
+  return out;
+}
+
+TEST(FusionSlam, OnlyAWholeMapSearchComparesANodeWithAFarCopyAndTheGateRefusesIt) {
+  const FarCopy cells = capture_the_same_view_far_away(CandidateSearch::kCells, true);
+  EXPECT_TRUE(cells.second.matches.empty());
+  EXPECT_EQ(cells.match_edges, 0u);
+
+  const FarCopy gated = capture_the_same_view_far_away(CandidateSearch::kWholeMap, true);
+  ASSERT_EQ(gated.second.matches.size(), 1u);
+  EXPECT_EQ(gated.second.matches[0].stored_node, 0u);
+  EXPECT_FALSE(gated.second.matches[0].accepted);
+  EXPECT_EQ(gated.second.matches[0].reason, "inconsistent with the graph");
+  EXPECT_EQ(gated.match_edges, 0u);
+
+  const FarCopy ungated = capture_the_same_view_far_away(CandidateSearch::kWholeMap, false);
+  ASSERT_EQ(ungated.second.matches.size(), 1u);
+  EXPECT_TRUE(ungated.second.matches[0].accepted) << ungated.second.matches[0].reason;
+  ASSERT_EQ(ungated.relations.size(), 1u);
+  // The match claims the robot is where it stood at the first capture (t = 0 s, 10 s).
+  EXPECT_DOUBLE_EQ(ungated.relations[0].t1_s, 0.0);
+  EXPECT_DOUBLE_EQ(ungated.relations[0].t2_s, 10.0);
+  EXPECT_NEAR(ungated.relations[0].motion.x, 0.0, 0.02);
+  EXPECT_NEAR(ungated.relations[0].motion.y, 0.0, 0.02);
+}
+
 TEST(FusionSlam, InvalidOptionsNameTheField) {
   FusionSlamOptions o;
   EXPECT_FALSE(validate(o));

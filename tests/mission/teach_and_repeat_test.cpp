@@ -81,7 +81,8 @@ TEST(TeachAndRepeat, ShortRunInTheOfficeMeetsTheBars) {
             << run.slam.matches_tried << ", final error " << run.final_error_m << " m, ratio "
             << run.path_ratio << ", ATE " << run.ate_corrected_m << " vs " << run.ate_odometry_m
             << ", search " << run.search_successes << "/" << run.search_trials << ", time "
-            << run.duration_s << " s simulated\n";
+            << run.duration_s << " s simulated, wrong matches " << run.wrong_matches << " (max "
+            << run.max_match_error_m << " m)\n";
   EXPECT_TRUE(run.reached_goal_cell);
   EXPECT_LE(run.final_error_m, 0.1);
   EXPECT_LE(run.path_ratio, 1.15);
@@ -95,6 +96,11 @@ TEST(TeachAndRepeat, ShortRunInTheOfficeMeetsTheBars) {
   EXPECT_GT(run.slam.matches_accepted, 0);
   EXPECT_GT(run.image_nodes, 5u);
   EXPECT_EQ(run.corrected_trajectory.size(), r->slam.graph_nodes());
+  // Every accepted match is scored against the true path: nearly all are right (wrong: over
+  // 0.2 m or 0.1 rad off), and none far off, since the gate refuses what moves the graph > 1 m.
+  EXPECT_GT(run.max_match_error_m, 0.0);
+  EXPECT_LT(run.max_match_error_m, 1.5);
+  EXPECT_LE(50 * run.wrong_matches, run.slam.matches_accepted);
 }
 
 // The obstacle course (thesis chapter 5, issue 18 item 9): boxes on the taught route after the

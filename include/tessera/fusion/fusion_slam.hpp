@@ -7,7 +7,8 @@
 //    visit of a field, and again when the camera has turned by recapture_turn_rad within it);
 //  - each new image node is matched (node_matcher.hpp) against the stored nodes of the current
 //    and the neighbouring cells ("search by cell", section 4.3.1) and the last few stored nodes,
-//    those whose camera faces the same way, nearest first;
+//    those whose camera faces the same way, nearest first (CandidateSearch::kWholeMap takes the
+//    cells away, for the ablation in docs/fusion-claims.md);
 //  - every accepted match becomes a constraint with a Huber loss in a 2D pose graph
 //    (posegraph/pose_graph.hpp) whose other edges are the odometry between consecutive graph nodes;
 //    the graph is optimised on every accepted match, and the hex cells, pose nodes and image
@@ -26,14 +27,28 @@
 #include <vector>
 
 #include "tessera/core/pose2.hpp"
+#include "tessera/core/relation.hpp"
 #include "tessera/core/rng.hpp"
 #include "tessera/core/stamped_pose2.hpp"
+#include "tessera/fusion/hex_cell_map.hpp"
 #include "tessera/fusion/image_node.hpp"
 #include "tessera/fusion/node_matcher.hpp"
-#include "tessera/fusion/hex_cell_map.hpp"
 #include "tessera/sensors/rgbd_frame.hpp"
 
 namespace tessera::fusion {
+
+/// Where a new image node's match candidates come from.
+enum class CandidateSearch {
+  /// The thesis' search by cell (4.3.1): the stored nodes of the current and neighbouring cells,
+  /// nearest first, and the recent nodes.
+  kCells,
+  /// As an RGB-D SLAM without cells looks for loop closures (Endres et al. 2014, "3-D mapping
+  /// with an RGB-D camera", IEEE T-RO 30(1), section III-C: the immediate predecessors plus
+  /// keyframes sampled at random from the whole graph): the recent nodes plus max_candidates
+  /// nodes drawn at random from every stored node. For the ablation of the thesis' claim that
+  /// the cells keep ambiguous images out (chapter 6, issue 18 item 11).
+  kWholeMap,
+};
 
 struct FusionSlamOptions {
   /// The thesis' cells (d = 0.3 m, pose nodes every 0.15 m) with a firing field of d/2 = 0.15 m,
@@ -59,8 +74,13 @@ struct FusionSlamOptions {
   /// recent_candidates stored nodes join the pool too (the previous views, wherever their cell).
   int max_candidates = 5;
   int recent_candidates = 6;
+  /// kCells: the thesis' firing fields. kWholeMap: the ablation without them (the heading
+  /// filter above applies to both, so that only the cells differ).
+  CandidateSearch candidate_search = CandidateSearch::kCells;
   /// An accepted match must agree with the current graph within these bounds; the matcher's own
-  /// checks come first, this guards against a poster photo that hangs twice nearby.
+  /// checks come first, this guards against a poster photo that hangs twice nearby. Ours; with
+  /// match_gate false every match the matcher accepts is kept, as in the thesis.
+  bool match_gate = true;
   double max_match_innovation_m = 1.0;
   double max_match_innovation_rad = 0.5;
   /// Motion out of the plane that a match may show (the camera is level on a flat floor).
@@ -180,6 +200,11 @@ class FusionSlam {
   /// Pose-graph sizes.
   [[nodiscard]] std::size_t graph_nodes() const { return poses_.size(); }
   [[nodiscard]] std::size_t match_edges() const { return match_edges_; }
+  /// Every accepted match as the relation it claims (Kummerle et al. 2009): the robot's pose at
+  /// the new node's stamp in the frame of its pose at the stored node's stamp, in the order
+  /// accepted. Scored against a true trajectory with eval/relation_metric.hpp, it says which
+  /// loop closures were wrong.
+  [[nodiscard]] std::vector<Relation> match_relations() const;
 
  private:
   struct GraphNode {
@@ -194,6 +219,11 @@ class FusionSlam {
   [[nodiscard]] std::optional<Pose2> planar_relative(const ImageNode& prev, const ImageNode& curr,
                                                      const MatchResult& m,
                                                      std::string& reason) const;
+  /// The stored nodes a new node at `pose` in `cell` is matched against (options.candidate_search),
+  /// at most max_candidates of the cells or recent nodes and, for kWholeMap, as many drawn from
+  /// the whole map.
+  [[nodiscard]] std::vector<std::size_t> match_candidates(std::size_t cell, std::size_t graph_node,
+                                                          const Pose2& pose, double neck_rad);
   void add_match_edge(std::size_t from, std::size_t to, const Pose2& T_from_to);
   bool optimise();
   [[nodiscard]] double camera_heading(const Pose2& T_map_robot, double neck_rad) const {
@@ -202,7 +232,8 @@ class FusionSlam {
 
   FusionSlamOptions options_;
   HexCellMap map_;
-  Rng rng_;
+  Rng rng_;         // RANSAC samples
+  Rng sample_rng_;  // kWholeMap's random candidates (its own stream: kCells draws none)
 
   // Pose graph (posegraph::PoseGraph is built on each optimisation from these).
   std::vector<GraphNode> graph_;

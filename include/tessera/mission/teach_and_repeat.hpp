@@ -169,6 +169,11 @@ struct TeachAndRepeatRun {
   double ate_corrected_m = 0.0;
   double ate_odometry_m = 0.0;
   double ate_ratio = 0.0;  // odometry / corrected (eval/drift_correction.hpp); 0: none
+  // Loop closures against the truth: every accepted match (the node search's included) as the
+  // motion it claims, scored on the true path (eval/relation_metric.hpp); wrong ones are off by
+  // more than 0.2 m or 0.1 rad (relations_off_by_more_than).
+  int wrong_matches = 0;
+  double max_match_error_m = 0.0;
   // Image-node search.
   int search_trials = 0;
   int search_successes = 0;

@@ -43,7 +43,7 @@ enum class CandidateSearch {
   /// nearest first, and the recent nodes.
   kCells,
   /// As an RGB-D SLAM without cells looks for loop closures (Endres et al. 2014, "3-D mapping
-  /// with an RGB-D camera", IEEE T-RO 30(1), section III-C: the immediate predecessors plus
+  /// with an RGB-D camera", IEEE T-RO 30(1): the immediate predecessors plus
   /// keyframes sampled at random from the whole graph): the recent nodes plus max_candidates
   /// nodes drawn at random from every stored node. For the ablation of the thesis' claim that
   /// the cells keep ambiguous images out (chapter 6, issue 18 item 11).

@@ -123,6 +123,9 @@ std::optional<std::string> validate(const TeachAndRepeatOptions& o) {
     if (!(std::isfinite(c.free_around_m) && c.free_around_m >= 0.0)) {
       return std::string("obstacle_course.free_around_m must be >= 0");
     }
+    if (!(std::isfinite(c.stop_when_blocked_s) && c.stop_when_blocked_s >= 0.0)) {
+      return std::string("obstacle_course.stop_when_blocked_s must be >= 0 (0: never)");
+    }
   }
   return std::nullopt;
 }
@@ -196,8 +199,10 @@ class TeachAndRepeatSimulation {
       if (body_world_ && !body_can_move(v, w)) {
         robot_.step(0.0, w, o_.control_period_s);  // the wheels stall; a disc can still turn
         ++blocked_steps;
+        ++blocked_in_a_row_;
       } else {
         robot_.step(v, w, o_.control_period_s);
+        blocked_in_a_row_ = 0;
       }
       ++steps_;
       t_s_ = static_cast<double>(steps_) * o_.control_period_s;
@@ -218,12 +223,17 @@ class TeachAndRepeatSimulation {
   }
   int blocked_steps = 0;   // control steps a contact stopped the body
   int frames_dropped = 0;  // frames lost (frame_drop_probability)
+  /// How long a contact has stopped the wheels without a break, up to now.
+  [[nodiscard]] double blocked_for_s() const { return blocked_in_a_row_ * o_.control_period_s; }
 
   /// Turn in place to `heading_rad` on `pose_of()`, then drive straight to `target` with a
   /// heading correction, braking to stop on it. The operator's (teach) or the navigation's
-  /// (search) point-to-point motion.
+  /// (search) point-to-point motion. On the obstacle course a drive that a contact has stopped for
+  /// stop_when_blocked_s ends where it is (Ok): the bumpers say the robot cannot get closer.
   template <typename PoseOf>
   Status go_to(Vec2 target, PoseOf pose_of, double tolerance_m) {
+    const double stop_when_blocked_s =
+        o_.obstacle_course ? o_.obstacle_course->stop_when_blocked_s : 0.0;
     start_drive();
     for (;;) {
       const Pose2 p = pose_of();
@@ -252,6 +262,7 @@ class TeachAndRepeatSimulation {
         w = std::clamp(1.5 * err, -o_.max_turn_rate_rad_per_s, o_.max_turn_rate_rad_per_s);
       }
       if (!drive(v, w)) return runtime_error("drive to a waypoint exceeded max_drive_s");
+      if (stop_when_blocked_s > 0.0 && blocked_for_s() >= stop_when_blocked_s) return Ok{};
     }
   }
 
@@ -286,6 +297,7 @@ class TeachAndRepeatSimulation {
   fusion::FusionSlam slam_;
   double neck_ = 0.0;
   std::int64_t steps_ = 0;
+  int blocked_in_a_row_ = 0;  // control steps, up to now
   double t_s_ = 0.0;
   double drive_start_s_ = 0.0;
   std::vector<StampedPose2> truth_;

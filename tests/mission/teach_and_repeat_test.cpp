@@ -188,6 +188,10 @@ TEST(TeachAndRepeat, InvalidOptionsNameTheField) {
   o.obstacle_course->body.body_radius_m = o.clearance_m;  // the taught route would touch walls
   ASSERT_TRUE(validate(o));
   EXPECT_NE(validate(o)->find("body_radius_m"), std::string::npos);
+  o.obstacle_course = ObstacleCourseOptions{};
+  o.obstacle_course->stop_when_blocked_s = -1.0;
+  ASSERT_TRUE(validate(o));
+  EXPECT_NE(validate(o)->find("stop_when_blocked_s"), std::string::npos);
 }
 
 }  // namespace

@@ -73,6 +73,12 @@ struct ObstacleCourseOptions {
   /// Open floor round each box: two route clearances, so that a route keeping the clearance
   /// passes on either side (decision 0028).
   double free_around_m = 0.6;
+  /// The drives onto a point (the goal cell's centre for the goal capture, a node in the
+  /// image-node search: centimetres, without the avoidance) end where the robot stands once a
+  /// contact has stopped its wheels this long: the bumpers say it cannot get closer, and the
+  /// capture is taken there. A cell's centre can lie closer to a wall than the body's radius
+  /// (the taught route keeps the clearance, the cells around it need not). 0: never. Ours.
+  double stop_when_blocked_s = 1.0;
 
   /// The thesis' avoidance with our strip and straight-on rules: obstacles count within the
   /// body's width plus 0.1 m of the line ahead, ranges start at the P3DX sonars' 0.2 m from the

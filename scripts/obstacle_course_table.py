@@ -109,6 +109,7 @@ def main():
               f"{min(rev, default=0)}-{max(rev, default=0)} (mean {mean:.1f})")
     if args.images:  # the office's runs of ours with boxes that got through
         dest = pathlib.Path(args.images)
+        dest.mkdir(parents=True, exist_ok=True)
         for (w, s, c), (out, r) in zip(jobs, results):
             if w is WORLDS[0] and c == CONFIGS[2] and "error" not in r:
                 shutil.copy(out / "hex_map_run1.png", dest / f"obstacle_course_office_seed{s}.png")

@@ -59,11 +59,12 @@ def run(tessera, out_root, world, seed, config, obstacles, reuse=False):
 def row(world, seed, config, r):
     head = f"| {world[0]} | {seed} | {config[0]} |"
     if "error" in r:
-        return head + f" **no**: {r['error']} | | | | | | |"
+        return head + f" **no**: {r['error']} | | | | | | | |"
     course = r.get("obstacle_course", {})
     return (head + f" {'yes' if r['reached_goal_cell'] else '**no**'} | "
             f"{r['navigation_path_m']:.2f} | {r['navigation_time_s']:.1f} | "
             f"{r['heading_reversals']} | {course.get('avoidance_updates', '-')} | "
+            f"{course.get('detours', '-')} | "
             f"{course.get('bumper_hits', '-')} | {course.get('blocked_steps', '-')} | "
             f"{r['final_error_m']:.3f} |")
 
@@ -94,8 +95,8 @@ def main():
             lambda j: run(args.tessera, out_root, j[0], j[1], j[2], args.obstacles, args.reuse),
             jobs))
     print("| World | Seed | Navigation | Reached | Distance (m) | Time (s) | Heading reversals | "
-          "Avoidance updates | Bumper hits | Blocked steps | Final error (m) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+          "Avoidance updates | Detours | Bumper hits | Blocked steps | Final error (m) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for (w, s, c), (_, r) in zip(jobs, results):
         print(row(w, s, c, r))
     print()

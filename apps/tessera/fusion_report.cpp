@@ -105,6 +105,7 @@ nlohmann::json run_json(const TeachAndRepeatRun& r) {
     for (const auto& [lo, hi] : r.obstacles_m) boxes.push_back({lo.x, lo.y, hi.x, hi.y});
     row["obstacle_course"] = {{"boxes_m", boxes},
                               {"avoidance_updates", r.avoidance_updates},
+                              {"detours", r.detours},
                               {"bumper_hits", r.bumper_hits},
                               {"blocked_steps", r.blocked_steps}};
   }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <unordered_map>
@@ -111,6 +112,8 @@ std::optional<std::string> validate(const TeachAndRepeatOptions& o) {
     const ObstacleCourseOptions& c = *o.obstacle_course;
     if (auto e = validate(c.body)) return "obstacle_course.body: " + *e;
     if (auto e = validate(c.avoidance)) return "obstacle_course.avoidance: " + *e;
+    if (auto e = validate(c.sonar_grid)) return "obstacle_course.sonar_grid: " + *e;
+    if (auto e = validate(c.detour)) return "obstacle_course.detour: " + *e;
     if (c.body.body_radius_m >= o.clearance_m) {
       return std::string("obstacle_course.body.body_radius_m must be < clearance_m");
     }
@@ -311,17 +314,70 @@ namespace {
 // The obstacle course's state in the navigation loop.
 struct CourseLoop {
   std::optional<ReactiveAvoidance> avoidance;  // empty: the robot drives blind
+  std::optional<SonarGrid> memory;             // empty: no detours
+  std::optional<double> detour_end_m;          // on a detour: where it rejoins the old path
+  double since_detour_s = 1e9;                 // time since the last detour was planned
   std::vector<Vec2> taught_m;                  // the taught path (only_new_obstacles)
   bool bumped = false;                         // a bumper was pressed at the last update
 };
 
+// Remembers this update's sonar sweep and, when a remembered obstacle new on the taught route
+// blocks the follower's path ahead, replaces the path by a detour round it. A detour is kept until
+// the robot is back on the old path unless something comes within the body's reach of it.
+void plan_round_obstacles(const ObstacleSensing& sensing, const Pose2& T_map_robot,
+                          const ObstacleCourseOptions& course, CourseLoop& loop,
+                          std::optional<PathFollower>& follower,
+                          const PathFollowerOptions& follower_options, double period_s,
+                          TeachAndRepeatRun& run) {
+  if (!loop.memory) return;
+  loop.memory->insert(T_map_robot, sensing.sonar);
+  loop.since_detour_s += period_s;
+  if (!follower || follower->arrived()) return;
+  const bool bumped = std::ranges::any_of(sensing.bumpers.front, std::identity{}) ||
+                      std::ranges::any_of(sensing.bumpers.rear, std::identity{});
+  if (!bumped && loop.since_detour_s < course.detour.min_replan_interval_s) return;
+  const std::vector<Vec2>& path = follower->waypoints();
+  const double progress_m = follower->progress_m();
+  if (loop.detour_end_m && progress_m >= *loop.detour_end_m) loop.detour_end_m.reset();
+  std::optional<PathBlockage> blockage;
+  if (loop.detour_end_m) {  // on a detour, up to where it rejoins: what the body would touch
+    DetourOptions near = course.detour;
+    near.block_radius_m = near.replan_radius_m;
+    near.look_ahead_m = std::min(near.replan_look_ahead_m, *loop.detour_end_m - progress_m);
+    blockage = find_blockage(path, progress_m, *loop.memory, near);
+  } else {
+    const auto on_route = [&](Vec2 c) {
+      return loop.taught_m.empty() ||
+             distance_to_polyline(c, loop.taught_m) <= course.body.body_radius_m;
+    };
+    blockage = find_blockage(path, progress_m, *loop.memory, course.detour, on_route);
+    // Pushed off the path (by the avoidance) or against something: back to the path by a route
+    // that keeps clear of everything remembered, not straight at it past a door post.
+    if (!blockage && (bumped || follower->cross_track_m() > course.detour.off_path_m)) {
+      blockage = PathBlockage{progress_m, progress_m};
+    }
+  }
+  if (!blockage) return;
+  std::optional<Detour> detour =
+      plan_detour(path, {T_map_robot.x, T_map_robot.y}, *blockage, *loop.memory, course.detour);
+  if (!detour) return;
+  // The old detour's end, carried onto the new path (it rejoins the old one before that end).
+  double end_m = detour->rejoin_m;
+  if (loop.detour_end_m && *loop.detour_end_m > detour->rejoin_on_old_path_m) {
+    end_m += *loop.detour_end_m - detour->rejoin_on_old_path_m;
+  }
+  loop.detour_end_m = end_m;
+  loop.since_detour_s = 0.0;
+  follower.emplace(std::move(detour->path), follower_options);
+  ++run.detours;
+}
+
 // One navigation update on the obstacle course: counts bumper hits and lets the avoidance filter
 // the navigation's command (thesis 4.3.4), hearing only what is new on the taught route when
 // only_new_obstacles is set (decision 0028).
-VelocityCommand on_course(TeachAndRepeatSimulation& x, const ObstacleCourseOptions& course,
-                          CourseLoop& loop, VelocityCommand cmd, double period_s,
-                          TeachAndRepeatRun& run) {
-  ObstacleSensing sensing = x.sense();
+VelocityCommand on_course(TeachAndRepeatSimulation& x, ObstacleSensing sensing,
+                          const ObstacleCourseOptions& course, CourseLoop& loop,
+                          VelocityCommand cmd, double period_s, TeachAndRepeatRun& run) {
   const auto pressed = [](const std::array<bool, 5>& ring) {
     return std::find(ring.begin(), ring.end(), true) != ring.end();
   };
@@ -577,6 +633,11 @@ Status TeachAndRepeat::navigate() {
   const std::optional<ObstacleCourseOptions>& course = options_.obstacle_course;
   CourseLoop course_loop;
   if (course && course->avoid) course_loop.avoidance.emplace(course->avoidance);
+  if (course && course->detours && !greedy) {
+    SonarGridOptions memory = course->sonar_grid;
+    memory.sensor_radius_m = course->body.sonar_radius_m;
+    course_loop.memory.emplace(memory);
+  }
   HeadingReversalCounter reversals(0.1);
   reversals.add(x.truth().theta);
   bool planned = false;
@@ -617,12 +678,25 @@ Status TeachAndRepeat::navigate() {
         follower.emplace(
             cell_path_polyline(graph, cell_path, {p.x, p.y}, graph.centres_m[run_.goal_cell], poly),
             options_.follower);
+        // A fresh path from the cells goes straight through what the sonars remember: check it
+        // at once rather than after the replan interval, or the two paths take turns.
+        course_loop.detour_end_m.reset();
+        course_loop.since_detour_s = std::numeric_limits<double>::infinity();
       }
+    }
+    std::optional<ObstacleSensing> sensing;
+    if (course_loop.memory) {
+      sensing = x.sense();
+      plan_round_obstacles(*sensing, slam.estimate(), *course, course_loop, follower,
+                           options_.follower, period, run_);
     }
     VelocityCommand cmd =
         greedy ? thesis->command(slam.estimate()) : follower->command(slam.estimate());
     if (greedy ? thesis->arrived() : follower->arrived()) break;
-    if (course) cmd = on_course(x, *course, course_loop, cmd, period, run_);
+    if (course) {
+      if (!sensing) sensing = x.sense();
+      cmd = on_course(x, std::move(*sensing), *course, course_loop, cmd, period, run_);
+    }
     if (!x.drive(cmd.v_m_per_s, cmd.omega_rad_per_s)) {
       return runtime_error("teach and repeat: navigation exceeded max_drive_s");
     }

@@ -116,7 +116,8 @@ CourseRun run_course(const RgbdCamera& camera, const StartAndGoal& sg, bool avoi
   options.navigation = navigation;
   options.max_drive_s = max_drive_s;
   ObstacleCourseOptions course;
-  course.avoid = avoid;
+  course.avoid = avoid;  // blind: neither the avoidance nor the detours
+  course.detours = avoid;
   options.obstacle_course = course;
   Result<TeachAndRepeatResult> r =
       run_teach_and_repeat(camera, options, sg.start, sg.goal_m, /*seed=*/3);
@@ -144,13 +145,15 @@ TEST(TeachAndRepeat, ObstacleCourseTheRobotGoesRoundTheBoxesAndStillReachesTheGo
     ASSERT_TRUE(c.run) << c.error;
     const TeachAndRepeatRun& run = *c.run;
     std::cout << "obstacle course: reversals " << run.heading_reversals << ", avoidance updates "
-              << run.avoidance_updates << ", bumper hits " << run.bumper_hits << ", blocked "
-              << run.blocked_steps << ", path " << run.navigation_path_m << " m in "
-              << run.navigation_time_s << " s, final error " << run.final_error_m << " m\n";
+              << run.avoidance_updates << ", detours " << run.detours << ", bumper hits "
+              << run.bumper_hits << ", blocked " << run.blocked_steps << ", path "
+              << run.navigation_path_m << " m in " << run.navigation_time_s << " s, final error "
+              << run.final_error_m << " m\n";
     ASSERT_EQ(run.obstacles_m.size(), 2u);
     EXPECT_TRUE(run.reached_goal_cell);
     EXPECT_LE(run.final_error_m, 0.1);
-    EXPECT_GT(run.avoidance_updates, 0);  // the boxes were in the way and were avoided
+    // The boxes were in the way: the robot planned routes round them from its sonar memory.
+    EXPECT_GT(run.detours, 0);
     // It went round the boxes: the repeated path (estimates, a few cm off the truth) keeps about
     // the body's radius from them.
     const double radius = ObstacleCourseOptions{}.body.body_radius_m;
@@ -162,7 +165,8 @@ TEST(TeachAndRepeat, ObstacleCourseTheRobotGoesRoundTheBoxesAndStillReachesTheGo
     EXPECT_GE(closest, radius - 0.05);
   }
 
-  // Without the avoidance the first box stops the robot: the drive runs out of time.
+  // Without the avoidance and the detours the first box stops the robot: the drive runs out of
+  // time.
   const CourseRun blind = run_course(*camera, *sg, /*avoid=*/false, RepeatNavigation::kPolyline,
                                      /*max_drive_s=*/120.0);
   EXPECT_FALSE(blind.run);
@@ -192,6 +196,14 @@ TEST(TeachAndRepeat, InvalidOptionsNameTheField) {
   o.obstacle_course->stop_when_blocked_s = -1.0;
   ASSERT_TRUE(validate(o));
   EXPECT_NE(validate(o)->find("stop_when_blocked_s"), std::string::npos);
+  o.obstacle_course = ObstacleCourseOptions{};
+  o.obstacle_course->detour.corridor_m = -1.0;
+  ASSERT_TRUE(validate(o));
+  EXPECT_NE(validate(o)->find("obstacle_course.detour: corridor_m"), std::string::npos);
+  o.obstacle_course = ObstacleCourseOptions{};
+  o.obstacle_course->sonar_grid.resolution_m = 0.0;
+  ASSERT_TRUE(validate(o));
+  EXPECT_NE(validate(o)->find("obstacle_course.sonar_grid: resolution_m"), std::string::npos);
 }
 
 }  // namespace

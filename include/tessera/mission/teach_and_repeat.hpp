@@ -32,8 +32,10 @@
 #include "tessera/core/vec2.hpp"
 #include "tessera/fusion/fusion_slam.hpp"
 #include "tessera/mission/teach_and_repeat_setup.hpp"
+#include "tessera/nav/detour_planner.hpp"
 #include "tessera/nav/path_follower.hpp"
 #include "tessera/nav/reactive_avoidance.hpp"
+#include "tessera/nav/sonar_grid.hpp"
 #include "tessera/sensors/odometry_model.hpp"
 #include "tessera/sensors/thesis_odometry.hpp"
 #include "tessera/sim/p3dx_body.hpp"
@@ -79,6 +81,14 @@ struct ObstacleCourseOptions {
   /// capture is taken there. A cell's centre can lie closer to a wall than the body's radius
   /// (the taught route keeps the clearance, the cells around it need not). 0: never. Ours.
   double stop_when_blocked_s = 1.0;
+  /// Ours: the sonar sweeps are remembered in an occupancy grid (nav/sonar_grid.hpp), and when an
+  /// occupied cell new on the taught route (as only_new_obstacles reads it) blocks the path ahead,
+  /// the robot plans a route round it on that grid (nav/detour_planner.hpp) instead of relying on
+  /// the avoidance's turns alone; the avoidance still filters every command. Only with the
+  /// polyline navigation. false: the reactive avoidance alone (decision 0028).
+  bool detours = true;
+  SonarGridOptions sonar_grid;
+  DetourOptions detour;
 
   /// The thesis' avoidance with our strip and straight-on rules: obstacles count within the
   /// body's width plus 0.1 m of the line ahead, ranges start at the P3DX sonars' 0.2 m from the
@@ -161,9 +171,11 @@ struct TeachAndRepeatRun {
       0;  // while navigating, true heading (eval/heading_reversals.hpp, 0.1 rad)
   // The obstacle course (options.obstacle_course): the boxes (lo, hi corners), the updates the
   // avoidance turned the robot away from a sonar echo, bumper hits (a bumper newly pressed) and
-  // control steps the body was stopped by a contact, all while navigating.
+  // control steps the body was stopped by a contact, all while navigating; and the detours planned
+  // round remembered obstacles (ObstacleCourseOptions::detours).
   std::vector<std::pair<Vec2, Vec2>> obstacles_m;
   int avoidance_updates = 0;
+  int detours = 0;
   int bumper_hits = 0;
   int blocked_steps = 0;
   double shortest_cell_path_m = 0.0;  // wavefront path over the learned cells, centre to centre

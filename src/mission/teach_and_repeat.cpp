@@ -316,7 +316,7 @@ struct CourseLoop {
   std::optional<ReactiveAvoidance> avoidance;  // empty: the robot drives blind
   std::optional<SonarGrid> memory;             // empty: no detours
   std::optional<double> detour_end_m;          // on a detour: where it rejoins the old path
-  double since_detour_s = 1e9;                 // time since the last detour was planned
+  double since_detour_s = std::numeric_limits<double>::infinity();  // since the last detour
   std::vector<Vec2> taught_m;                  // the taught path (only_new_obstacles)
   bool bumped = false;                         // a bumper was pressed at the last update
 };

@@ -248,8 +248,8 @@ class LaserSlam {
   /// Begins a new trajectory in the same graph (a resumed session, issue 16): the next scan is
   /// placed at T_map_robot in the map as optimised so far, with no odometry tie to the scan
   /// before it (a new log's odometry has its own origin). The trajectory before it ends as a run
-  /// ends: the graph is optimised as finish() does (so a session replayed from its scans is
-  /// then exactly the saved one), and its active submaps are finished and searched for loops.
+  /// ends in finish(): its active submaps are finished and searched for loops, and the graph is
+  /// optimised (so a session replayed from its scans is then exactly the saved one).
   /// The new trajectory's first node is tied to the nearest earlier node with start_sigmas and
   /// builds its own submaps; loop closures then join them to the old ones. Before any scan, it
   /// only sets the first scan's pose. Runtime error if the optimisation fails.
@@ -267,7 +267,8 @@ class LaserSlam {
   /// added.
   [[nodiscard]] LaserSlamResult snapshot() const;
 
-  /// Final optimisation, trajectory and map. Call once, after the last scan.
+  /// Finishes the open submaps (searching them for loops with every older node), then the final
+  /// optimisation, trajectory and map. Call once, after the last scan.
   [[nodiscard]] Result<LaserSlamResult> finish();
 
  private:

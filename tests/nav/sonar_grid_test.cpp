@@ -59,9 +59,10 @@ TEST(SonarGrid, OccupiedWithinListsTheOccupiedCellsInTheDiscSorted) {
   for (std::size_t i = 0; i < near.size(); ++i) {
     EXPECT_LE((near[i] - Vec2{1.2, 0.0}).norm(), 0.3);
     EXPECT_TRUE(grid.occupied(near[i]));
-    if (i > 0)
+    if (i > 0) {
       EXPECT_TRUE(near[i - 1].x < near[i].x ||
                   (near[i - 1].x == near[i].x && near[i - 1].y < near[i].y));
+    }
   }
   EXPECT_TRUE(grid.occupied_within({-3.0, 0.0}, 0.5).empty());
 }

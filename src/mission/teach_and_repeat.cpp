@@ -1,7 +1,6 @@
 #include "tessera/mission/teach_and_repeat.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -38,15 +37,6 @@ std::pair<int, int> goal_view_score(const fusion::NodeCreation& view) {
   }
   return {static_cast<int>(std::count(covered.begin(), covered.end(), 1)),
           view.features_with_depth};
-}
-
-// Distance from p to the polyline `line` (infinity when it is empty).
-double distance_to_polyline(Vec2 p, const std::vector<Vec2>& line) {
-  double best = line.empty() ? std::numeric_limits<double>::infinity() : (p - line[0]).norm();
-  for (std::size_t i = 1; i < line.size(); ++i) {
-    best = std::min(best, distance_to_segment(p, line[i - 1], line[i]));
-  }
-  return best;
 }
 
 // The sonar echoes that lie within reach_m of the taught path (map frame), seen from the robot's
@@ -321,6 +311,12 @@ struct CourseLoop {
   bool bumped = false;                         // a bumper was pressed at the last update
 };
 
+// True when any front or rear bumper is pressed.
+bool any_bumper_pressed(const BumperState& b) {
+  return std::ranges::any_of(b.front, std::identity{}) ||
+         std::ranges::any_of(b.rear, std::identity{});
+}
+
 // Remembers this update's sonar sweep and, when a remembered obstacle new on the taught route
 // blocks the follower's path ahead, replaces the path by a detour round it. A detour is kept until
 // the robot is back on the old path unless something comes within the body's reach of it.
@@ -333,8 +329,7 @@ void plan_round_obstacles(const ObstacleSensing& sensing, const Pose2& T_map_rob
   loop.memory->insert(T_map_robot, sensing.sonar);
   loop.since_detour_s += period_s;
   if (!follower || follower->arrived()) return;
-  const bool bumped = std::ranges::any_of(sensing.bumpers.front, std::identity{}) ||
-                      std::ranges::any_of(sensing.bumpers.rear, std::identity{});
+  const bool bumped = any_bumper_pressed(sensing.bumpers);
   if (!bumped && loop.since_detour_s < course.detour.min_replan_interval_s) return;
   const std::vector<Vec2>& path = follower->waypoints();
   const double progress_m = follower->progress_m();
@@ -378,10 +373,7 @@ void plan_round_obstacles(const ObstacleSensing& sensing, const Pose2& T_map_rob
 VelocityCommand on_course(TeachAndRepeatSimulation& x, ObstacleSensing sensing,
                           const ObstacleCourseOptions& course, CourseLoop& loop,
                           VelocityCommand cmd, double period_s, TeachAndRepeatRun& run) {
-  const auto pressed = [](const std::array<bool, 5>& ring) {
-    return std::find(ring.begin(), ring.end(), true) != ring.end();
-  };
-  const bool bump = pressed(sensing.bumpers.front) || pressed(sensing.bumpers.rear);
+  const bool bump = any_bumper_pressed(sensing.bumpers);
   if (bump && !loop.bumped) ++run.bumper_hits;
   loop.bumped = bump;
   if (!loop.avoidance) return cmd;

@@ -98,4 +98,27 @@ double polyline_length_m(const std::vector<Vec2>& points_m) {
   return len;
 }
 
+Vec2 polyline_point_at(const std::vector<Vec2>& points_m, double s_m) {
+  TESSERA_ASSERT(!points_m.empty());
+  double s = 0.0;
+  for (std::size_t i = 1; i < points_m.size(); ++i) {
+    const double len = (points_m[i] - points_m[i - 1]).norm();
+    if (s + len >= s_m && len > 0.0) {
+      const double t = std::clamp((s_m - s) / len, 0.0, 1.0);
+      return points_m[i - 1] + (points_m[i] - points_m[i - 1]) * t;
+    }
+    s += len;
+  }
+  return s_m <= 0.0 ? points_m.front() : points_m.back();
+}
+
+double distance_to_polyline(Vec2 p, const std::vector<Vec2>& points_m) {
+  double best =
+      points_m.empty() ? std::numeric_limits<double>::infinity() : (p - points_m[0]).norm();
+  for (std::size_t i = 1; i < points_m.size(); ++i) {
+    best = std::min(best, distance_to_segment(p, points_m[i - 1], points_m[i]));
+  }
+  return best;
+}
+
 }  // namespace tessera

@@ -78,20 +78,6 @@ std::optional<std::string> validate(const DetourOptions& o) {
   return std::nullopt;
 }
 
-Vec2 polyline_point_at(const std::vector<Vec2>& path, double s_m) {
-  TESSERA_ASSERT(!path.empty());
-  double s = 0.0;
-  for (std::size_t i = 1; i < path.size(); ++i) {
-    const double len = (path[i] - path[i - 1]).norm();
-    if (s + len >= s_m && len > 0.0) {
-      const double t = std::clamp((s_m - s) / len, 0.0, 1.0);
-      return path[i - 1] + (path[i] - path[i - 1]) * t;
-    }
-    s += len;
-  }
-  return s_m <= 0.0 ? path.front() : path.back();
-}
-
 std::optional<PathBlockage> find_blockage(const std::vector<Vec2>& path, double from_m,
                                           const SonarGrid& grid, const DetourOptions& options,
                                           const std::function<bool(Vec2)>& counts) {
@@ -145,11 +131,10 @@ std::optional<Detour> plan_detour(const std::vector<Vec2>& path, Vec2 robot_m,
   std::vector<std::uint8_t> corridor(g.size(), 0);
   for (std::size_t i = 0; i < g.size(); ++i) {
     const Vec2 c = g.center_of(g.cell_of(i));
-    bool near = (c - robot_m).norm() <= options.corridor_m;
-    for (std::size_t k = 1; k < path.size() && !near; ++k) {
-      near = distance_to_segment(c, path[k - 1], path[k]) <= options.corridor_m;
-    }
-    corridor[i] = near ? 1 : 0;
+    corridor[i] = (c - robot_m).norm() <= options.corridor_m ||
+                          distance_to_polyline(c, path) <= options.corridor_m
+                      ? 1
+                      : 0;
   }
   for (const double clearance : options.clearances_m) {
     std::vector<std::uint8_t> mask = corridor;

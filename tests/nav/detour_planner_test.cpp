@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tessera/core/vec2.hpp"
+#include "tessera/nav/cell_polyline.hpp"
 
 namespace tessera {
 namespace {

@@ -87,6 +87,8 @@ struct ObstacleCourseOptions {
   /// the avoidance's turns alone; the avoidance still filters every command. Only with the
   /// polyline navigation. false: the reactive avoidance alone (decision 0028).
   bool detours = true;
+  /// The memory's sonars sit where the body's do: its sensor_radius_m is set from
+  /// body.sonar_radius_m.
   SonarGridOptions sonar_grid;
   DetourOptions detour;
 

@@ -47,4 +47,10 @@ struct CellPolylineOptions {
 /// Length of a polyline, metres.
 [[nodiscard]] double polyline_length_m(const std::vector<Vec2>& points_m);
 
+/// The point at arc length s_m along a polyline (clamped to its ends). Precondition: non-empty.
+[[nodiscard]] Vec2 polyline_point_at(const std::vector<Vec2>& points_m, double s_m);
+
+/// Distance from p to a polyline, metres (to its one point when it has one; infinity when empty).
+[[nodiscard]] double distance_to_polyline(Vec2 p, const std::vector<Vec2>& points_m);
+
 }  // namespace tessera

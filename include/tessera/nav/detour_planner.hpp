@@ -61,9 +61,6 @@ struct PathBlockage {
   double last_m = 0.0;
 };
 
-/// The point at arc length s_m along a polyline (clamped to its ends). Precondition: non-empty.
-[[nodiscard]] Vec2 polyline_point_at(const std::vector<Vec2>& path, double s_m);
-
 /// The blocked stretch of `path` between arc lengths from_m + skip_m and from_m + look_ahead_m,
 /// counting only the occupied cells for which `counts` is true (all when it is empty); nullopt when
 /// the stretch is clear. Cost: O(samples x occupied cells near the stretch).

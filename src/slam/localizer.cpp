@@ -72,6 +72,10 @@ std::optional<std::string> validate(const LocalizerOptions& o) {
   if (!(o.agreement.linear_m > 0.0) || !(o.agreement.angular_rad > 0.0)) {
     return "agreement must be > 0";
   }
+  if (!(o.new_view_motion.linear_m >= 0.0) || !(o.new_view_motion.angular_rad >= 0.0)) {
+    return "new_view_motion must be >= 0";
+  }
+  if (!(o.max_idle_search_s >= 0.0)) return "max_idle_search_s must be >= 0";
   if (!(o.distinct.linear_m > 0.0) || !(o.distinct.angular_rad > 0.0)) {
     return "distinct must be > 0";
   }
@@ -120,6 +124,8 @@ struct Localizer::Impl {
   std::deque<ViewScan> view;                  // the scans since tracking failed (view_s of them)
   ProbabilityGrid view_grid;                  // the view's scans at their view poses
   std::optional<double> last_search_s;
+  Pose2 odometry_at_last_search;    // where the last search saw the view from
+  bool last_search_placed = false;  // it left a pose waiting for confirmation (or accepted one)
   /// A match of the view that waits for the next searches to agree with it.
   struct Candidate {
     Pose2 T_map_view;
@@ -397,6 +403,19 @@ struct Localizer::Impl {
     stats.search_s += seconds_since(t0);
   }
 
+  /// Whether a global search is due at this scan: search_every_s of data since the last one (or
+  /// none yet, or the stamps went back), and, after a search that placed nothing, a view that has
+  /// changed since (the odometry moved by new_view_motion) or max_idle_search_s gone by.
+  [[nodiscard]] bool search_due(const StampedScan& scan) const {
+    if (!last_search_s || scan.t_s < *last_search_s) return true;
+    const double since_s = scan.t_s - *last_search_s;
+    if (since_s < options.search_every_s) return false;
+    if (last_search_placed || since_s >= options.max_idle_search_s) return true;
+    const Pose2 moved = between(odometry_at_last_search, scan.odometry);
+    return std::hypot(moved.x, moved.y) >= options.new_view_motion.linear_m ||
+           std::abs(moved.theta) >= options.new_view_motion.angular_rad;
+  }
+
   LocalizedScan add_scan(const StampedScan& scan) {
     ++stats.scans;
     LocalizedScan out;
@@ -436,11 +455,11 @@ struct Localizer::Impl {
     if (!pose || unexplained_since_s) {
       add_to_view(scan.t_s, scan.odometry, points);
     }
-    if (!pose && !view.empty() &&
-        (!last_search_s || scan.t_s - *last_search_s >= options.search_every_s ||
-         scan.t_s < *last_search_s)) {
+    if (!pose && !view.empty() && search_due(scan)) {
       last_search_s = scan.t_s;
+      odometry_at_last_search = scan.odometry;
       relocalize(out);
+      last_search_placed = candidate.has_value() || out.state == LocalizationState::kRelocalized;
       if (out.state == LocalizationState::kRelocalized) {
         pose = out.T_map_robot;
         view.clear();

@@ -207,6 +207,46 @@ TEST(Localizer, ASymmetricRoomIsNeverClaimed) {
   EXPECT_EQ(localizer.stats().ambiguous, localizer.stats().searches);
 }
 
+// A robot standing still in the bare room: the view does not change, so after an ambiguous
+// search the next waits for the robot to move (or for max_idle_search_s), instead of asking the
+// same question every search_every_s. Once it drives, the searches come at their pace again.
+TEST(Localizer, AnUnplacedViewIsSearchedAgainOnlyWhenItChanges) {
+  const SimulatedLaserRun run = bare_room_run(10.0);
+  std::vector<StampedScan> scans;
+  for (int k = 0; k < 100; ++k) {  // 20 s standing at the first scan's pose, 5 scans a second
+    StampedScan s = run.log.scans.front();
+    s.t_s = 0.2 * k;
+    scans.push_back(s);
+  }
+  const LocalizerOptions options;
+  Localizer still(map_at_truth(run), options);
+  for (const StampedScan& s : scans) EXPECT_EQ(still.add_scan(s).state, LocalizationState::kLost);
+  // One search at the start, then one every max_idle_search_s (5 s): at 0, 5, 10 and 15 s.
+  EXPECT_EQ(still.stats().searches, 4);
+  EXPECT_EQ(still.stats().ambiguous, 4);
+
+  // Asked every time (at the scans' pace, 0.6 s apart): 34 searches, all ambiguous.
+  LocalizerOptions every_time = options;
+  every_time.max_idle_search_s = options.search_every_s;
+  Localizer eager(map_at_truth(run), every_time);
+  for (const StampedScan& s : scans) (void)eager.add_scan(s);
+  EXPECT_EQ(eager.stats().searches, 34);
+
+  // Then it drives (the run's own scans, after the standing ones): its view changes, and it is
+  // searched as often as the eager localizer searches it.
+  const int still_before = still.stats().searches;
+  const int eager_before = eager.stats().searches;
+  for (const StampedScan& s : run.log.scans) {
+    StampedScan later = s;
+    later.t_s += 20.0;
+    (void)still.add_scan(later);
+    (void)eager.add_scan(later);
+  }
+  const int eager_driving = eager.stats().searches - eager_before;
+  EXPECT_GT(eager_driving, 10);
+  EXPECT_GE(still.stats().searches - still_before, eager_driving - 1);
+}
+
 TEST(Localizer, AViewThatSeesThroughTheMapsWallsIsRefused) {
   // An L-shaped room (no symmetry), mapped; then the map gets a 1.5 m block of wall in the middle
   // of the room, where the robot now sees open floor (furniture since removed, or a look-alike
@@ -328,6 +368,12 @@ TEST(Localizer, OptionsOutsideTheirRangeAreNamed) {
   o = {};
   o.min_search_score = 0.05;
   EXPECT_EQ(validate(o).value_or(""), "min_search_score must be in (0.1, 0.9)");
+  o = {};
+  o.max_idle_search_s = -1.0;
+  EXPECT_EQ(validate(o).value_or(""), "max_idle_search_s must be >= 0");
+  o = {};
+  o.new_view_motion.angular_rad = -0.1;
+  EXPECT_EQ(validate(o).value_or(""), "new_view_motion must be >= 0");
 }
 
 }  // namespace

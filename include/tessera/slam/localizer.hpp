@@ -100,6 +100,13 @@ struct LocalizerOptions {
   /// rarely wins the next with more of the building in view.
   int confirmations = 2;
   SearchWindow agreement{0.2, 0.05};
+  /// A search that placed nothing (no pose good enough, unfit, seeing through walls, or
+  /// ambiguous) is run again only once the odometry has moved by new_view_motion since it, or
+  /// after max_idle_search_s of data: a robot standing still shows the search the same view, and
+  /// the same view gets the same answer (AMCL updates only after motion, for the same reason). A
+  /// pose waiting for its confirmation is searched again at search_every_s as before.
+  SearchWindow new_view_motion{0.05, 0.05};
+  double max_idle_search_s = 5.0;
 };
 
 /// Empty when usable; otherwise names the field and the rule it breaks.

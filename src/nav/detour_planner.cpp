@@ -61,6 +61,7 @@ std::optional<std::string> validate(const DetourOptions& o) {
   if (!positive(o.block_radius_m)) return "block_radius_m must be > 0";
   if (!positive(o.replan_radius_m)) return "replan_radius_m must be > 0";
   if (!positive(o.off_path_m)) return "off_path_m must be > 0";
+  if (!positive(o.give_up_after_s)) return "give_up_after_s must be > 0";
   if (!positive(o.replan_look_ahead_m)) return "replan_look_ahead_m must be > 0";
   if (!std::isfinite(o.min_replan_interval_s) || o.min_replan_interval_s < 0.0) {
     return "min_replan_interval_s must be >= 0";
@@ -106,7 +107,7 @@ std::optional<PathBlockage> find_blockage(const std::vector<Vec2>& path, double 
 
 std::optional<Detour> plan_detour(const std::vector<Vec2>& path, Vec2 robot_m,
                                   const PathBlockage& blockage, const SonarGrid& grid,
-                                  const DetourOptions& options) {
+                                  const DetourOptions& options, const std::vector<Vec2>& seen_m) {
   TESSERA_ASSERT(!path.empty() && !validate(options));
   const double length_m = polyline_length_m(path);
   const double rejoin_from_m = std::min(length_m, blockage.last_m + options.rejoin_after_m);
@@ -127,12 +128,13 @@ std::optional<Detour> plan_detour(const std::vector<Vec2>& path, Vec2 robot_m,
   const std::vector<Vec2> occupied =
       grid.occupied_within(centre, (hi - lo).norm() * 0.5 + m * 1.5 + widest);
 
-  // The corridor: cells near the old path or the robot.
+  // The corridor: cells near the old path, the robot or the route driven before.
   std::vector<std::uint8_t> corridor(g.size(), 0);
   for (std::size_t i = 0; i < g.size(); ++i) {
     const Vec2 c = g.center_of(g.cell_of(i));
     corridor[i] = (c - robot_m).norm() <= options.corridor_m ||
-                          distance_to_polyline(c, path) <= options.corridor_m
+                          distance_to_polyline(c, path) <= options.corridor_m ||
+                          (!seen_m.empty() && distance_to_polyline(c, seen_m) <= options.corridor_m)
                       ? 1
                       : 0;
   }

@@ -112,9 +112,35 @@ TEST(DetourPlanner, AWallAcrossTheCorridorLeavesNoDetour) {
   EXPECT_FALSE(plan_detour(kStraight, {0.5, 0.0}, *blockage, grid, options));
 }
 
+TEST(DetourPlanner, ARouteDrivenBeforeWidensTheCorridorAlongItOnly) {
+  // A wall across the path whose ends lie beyond the corridor round it (0.8 m off, plus the
+  // clearance): no detour, unless a route driven before passes round an end (y = 1.3 m), where
+  // the sonars have swept; the detour then keeps within the corridor round one of the two.
+  std::vector<Vec2> echoes;
+  for (double y = -0.8; y <= 0.8 + 1e-9; y += 0.05) echoes.push_back({2.0, y});
+  const SonarGrid grid = grid_with(echoes, std::numbers::pi);
+  const DetourOptions options;
+  const std::optional<PathBlockage> blockage = find_blockage(kStraight, 0.5, grid, options);
+  ASSERT_TRUE(blockage);
+  EXPECT_FALSE(plan_detour(kStraight, {0.5, 0.0}, *blockage, grid, options));
+  const std::vector<Vec2> driven = {{0.5, 0.0}, {1.0, 1.3}, {3.0, 1.3}, {3.5, 0.0}};
+  const std::optional<Detour> detour =
+      plan_detour(kStraight, {0.5, 0.0}, *blockage, grid, options, driven);
+  ASSERT_TRUE(detour);
+  EXPECT_GE(clearance_m(detour->path, grid), options.clearances_m.back() - 0.05);
+  for (const Vec2 p : detour->path) {
+    EXPECT_LE(std::min(distance_to_polyline(p, kStraight), distance_to_polyline(p, driven)),
+              options.corridor_m + 0.05);
+  }
+}
+
 TEST(DetourPlanner, ValidateNamesTheBadField) {
   DetourOptions o;
   EXPECT_FALSE(validate(o));
+  o.give_up_after_s = 0.0;
+  ASSERT_TRUE(validate(o));
+  EXPECT_NE(validate(o)->find("give_up_after_s"), std::string::npos);
+  o = {};
   o.clearances_m.clear();
   ASSERT_TRUE(validate(o));
   EXPECT_NE(validate(o)->find("clearances_m"), std::string::npos);

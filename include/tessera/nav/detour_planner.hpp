@@ -37,6 +37,11 @@ struct DetourOptions {
   /// A robot further than this from its path (pushed off it by the avoidance), or one whose
   /// bumpers are pressed, is routed back to the path round what is remembered (the caller's rule).
   double off_path_m = 0.15;
+  /// A path (a detour or the path from the cells) along which the robot has not advanced 0.1 m in
+  /// this long is given up and the path planned afresh (the caller's rule): the avoidance can hold
+  /// a robot short of a detour's end, at a wall the detour was planned through before the sonars
+  /// had seen it.
+  double give_up_after_s = 5.0;
   /// The detour rejoins the path this far past its last blocked point.
   double rejoin_after_m = 0.5;
   /// The planning grid covers the robot and the path up to the rejoin point, grown by this.
@@ -80,11 +85,14 @@ struct Detour {
 /// A new path for the robot at robot_m: round the occupied cells of `grid` to the path's first
 /// free point at least rejoin_after_m past blockage.last_m, then on along `path` to its end.
 /// Starts at robot_m, or when the robot stands within the clearance at the nearest cell outside it
-/// (a path follower then joins it where it is nearest). nullopt when no clearance in
-/// options.clearances_m leads there. Preconditions: path non-empty, !validate(options). Cost: one
-/// Dijkstra search per clearance on a grid of the window's size.
+/// (a path follower then joins it where it is nearest). The route keeps within corridor_m of
+/// `path`, of the robot, or of seen_m (a route driven before, e.g. the taught one, whose
+/// surroundings the sonars have swept). nullopt when no clearance in options.clearances_m leads
+/// there. Preconditions: path non-empty, !validate(options). Cost: one Dijkstra search per
+/// clearance on a grid of the window's size, and a distance to each polyline per window cell.
 [[nodiscard]] std::optional<Detour> plan_detour(const std::vector<Vec2>& path, Vec2 robot_m,
                                                 const PathBlockage& blockage, const SonarGrid& grid,
-                                                const DetourOptions& options);
+                                                const DetourOptions& options,
+                                                const std::vector<Vec2>& seen_m = {});
 
 }  // namespace tessera

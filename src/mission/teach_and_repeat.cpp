@@ -71,6 +71,20 @@ std::size_t replan_start_cell(const CellGraph& graph, const WavefrontField& fiel
   return best;
 }
 
+// The point of the polyline points_m (non-empty) nearest p.
+Vec2 nearest_on_polyline(Vec2 p, const std::vector<Vec2>& points_m) {
+  Vec2 best = points_m.front();
+  for (std::size_t i = 1; i < points_m.size(); ++i) {
+    const Vec2 a = points_m[i - 1];
+    const Vec2 d = points_m[i] - a;
+    const double len2 = d.dot(d);
+    const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+    const Vec2 q = a + d * t;
+    if ((q - p).norm() < (best - p).norm()) best = q;
+  }
+  return best;
+}
+
 }  // namespace
 
 std::optional<std::string> validate(const TeachAndRepeatOptions& o) {
@@ -104,6 +118,9 @@ std::optional<std::string> validate(const TeachAndRepeatOptions& o) {
     if (auto e = validate(c.avoidance)) return "obstacle_course.avoidance: " + *e;
     if (auto e = validate(c.sonar_grid)) return "obstacle_course.sonar_grid: " + *e;
     if (auto e = validate(c.detour)) return "obstacle_course.detour: " + *e;
+    if (!positive(c.forget_memory_jump_m)) {
+      return std::string("obstacle_course.forget_memory_jump_m must be > 0");
+    }
     if (c.body.body_radius_m >= o.clearance_m) {
       return std::string("obstacle_course.body.body_radius_m must be < clearance_m");
     }
@@ -309,7 +326,52 @@ struct CourseLoop {
   double since_detour_s = std::numeric_limits<double>::infinity();  // since the last detour
   std::vector<Vec2> taught_m;                  // the taught path (only_new_obstacles)
   bool bumped = false;                         // a bumper was pressed at the last update
+  // Progress towards the goal: the path still ahead at best since the last detour (paths counts
+  // them), and for how long it has not shortened. A robot that stops getting nearer is stuck.
+  int paths = 0;
+  int watched_path = -1;
+  double best_remaining_m = 0.0;
+  double stalled_s = 0.0;
+  bool stuck = false;  // plan a way round what is remembered from where the robot stands
+  // The estimate and the odometry at the last update: a correction's jump forgets the memory.
+  std::optional<std::pair<Pose2, Pose2>> last_estimate_odometry;
 };
+
+// Forgets the sonar memory when the estimate has jumped (a correction) further than jump_m from
+// where the odometry since the last update would have carried it.
+void forget_after_jump(CourseLoop& loop, const Pose2& estimate, const Pose2& odometry,
+                       const SonarGridOptions& memory, double jump_m) {
+  if (!loop.memory) return;
+  if (loop.last_estimate_odometry) {
+    const auto& [last_estimate, last_odometry] = *loop.last_estimate_odometry;
+    const Pose2 predicted = last_estimate * (last_odometry.inverse() * odometry);
+    if (std::hypot(estimate.x - predicted.x, estimate.y - predicted.y) > jump_m) {
+      loop.memory.emplace(memory);
+    }
+  }
+  loop.last_estimate_odometry = {estimate, odometry};
+}
+
+// True once the path ahead has not shortened by kAdvanceM in give_up_after_s (a new detour, which
+// lengthens it on purpose, starts the watch again): the avoidance holds the robot, e.g. against a
+// wall that a detour was planned through before the sonars saw it, or short of a box nearer than
+// the blockage check looks.
+bool stalled(CourseLoop& loop, const PathFollower& follower, double period_s,
+             const DetourOptions& o) {
+  constexpr double kAdvanceM = 0.1;
+  const double remaining_m = polyline_length_m(follower.waypoints()) - follower.progress_m();
+  if (loop.watched_path != loop.paths || remaining_m < loop.best_remaining_m - kAdvanceM) {
+    loop.watched_path = loop.paths;
+    loop.best_remaining_m = remaining_m;
+    loop.stalled_s = 0.0;
+    return false;
+  }
+  loop.stalled_s += period_s;
+  if (loop.stalled_s < o.give_up_after_s) return false;
+  loop.stalled_s = 0.0;
+  loop.best_remaining_m = remaining_m;
+  return true;
+}
 
 // True when any front or rear bumper is pressed.
 bool any_bumper_pressed(const BumperState& b) {
@@ -329,7 +391,8 @@ void plan_round_obstacles(const ObstacleSensing& sensing, const Pose2& T_map_rob
   loop.memory->insert(T_map_robot, sensing.sonar);
   loop.since_detour_s += period_s;
   if (!follower || follower->arrived()) return;
-  const bool bumped = any_bumper_pressed(sensing.bumpers);
+  const bool bumped = any_bumper_pressed(sensing.bumpers) || loop.stuck;
+  loop.stuck = false;
   if (!bumped && loop.since_detour_s < course.detour.min_replan_interval_s) return;
   const std::vector<Vec2>& path = follower->waypoints();
   const double progress_m = follower->progress_m();
@@ -353,8 +416,8 @@ void plan_round_obstacles(const ObstacleSensing& sensing, const Pose2& T_map_rob
     }
   }
   if (!blockage) return;
-  std::optional<Detour> detour =
-      plan_detour(path, {T_map_robot.x, T_map_robot.y}, *blockage, *loop.memory, course.detour);
+  std::optional<Detour> detour = plan_detour(path, {T_map_robot.x, T_map_robot.y}, *blockage,
+                                             *loop.memory, course.detour, loop.taught_m);
   if (!detour) return;
   // The old detour's end, carried onto the new path (it rejoins the old one before that end).
   double end_m = detour->rejoin_m;
@@ -364,6 +427,7 @@ void plan_round_obstacles(const ObstacleSensing& sensing, const Pose2& T_map_rob
   loop.detour_end_m = end_m;
   loop.since_detour_s = 0.0;
   follower.emplace(std::move(detour->path), follower_options);
+  ++loop.paths;
   ++run.detours;
 }
 
@@ -624,11 +688,11 @@ Status TeachAndRepeat::navigate() {
   std::optional<GreedyCellController> thesis;
   const std::optional<ObstacleCourseOptions>& course = options_.obstacle_course;
   CourseLoop course_loop;
+  SonarGridOptions memory_options = course ? course->sonar_grid : SonarGridOptions{};
   if (course && course->avoid) course_loop.avoidance.emplace(course->avoidance);
   if (course && course->detours && !greedy) {
-    SonarGridOptions memory = course->sonar_grid;
-    memory.sensor_radius_m = course->body.sonar_radius_m;
-    course_loop.memory.emplace(memory);
+    memory_options.sensor_radius_m = course->body.sonar_radius_m;
+    course_loop.memory.emplace(memory_options);
   }
   HeadingReversalCounter reversals(0.1);
   reversals.add(x.truth().theta);
@@ -638,7 +702,9 @@ Status TeachAndRepeat::navigate() {
   poly.cell_radius_m = cell_radius_m;
   x.start_drive();
   for (;;) {
-    if (seen_corrections != x.corrections) {
+    // A detour is followed to its end: the path from the cells knows nothing of the boxes, and
+    // replacing a detour by it at every correction turned the robot to and fro between them.
+    if (seen_corrections != x.corrections && !course_loop.detour_end_m) {
       seen_corrections = x.corrections;
       // On an obstacle course the cells mapped going round a box join the taught ones only where
       // the robot crossed between them: plan over the lattice neighbours that are both mapped
@@ -667,17 +733,28 @@ Status TeachAndRepeat::navigate() {
       if (greedy) {
         thesis.emplace(graph, run_.goal_cell, GreedyCellControllerOptions{options_.follower});
       } else {
-        follower.emplace(
-            cell_path_polyline(graph, cell_path, {p.x, p.y}, graph.centres_m[run_.goal_cell], poly),
-            options_.follower);
+        const Vec2 centre_m = graph.centres_m[run_.goal_cell];
+        // Ours, on the obstacle course: a cell's centre can lie nearer a wall than the body's
+        // radius (the taught route keeps the clearance, the cells round it need not), where the
+        // avoidance and the bumpers never let the robot arrive. The path ends instead at the
+        // point of the taught route nearest the centre, which the robot has driven, when that
+        // lies in the cell's inner half.
+        Vec2 path_end_m = centre_m;
+        if (course_loop.memory && !course_loop.taught_m.empty()) {
+          const Vec2 q = nearest_on_polyline(centre_m, course_loop.taught_m);
+          if ((q - centre_m).norm() <= 0.5 * cell_radius_m) path_end_m = q;
+        }
+        follower.emplace(cell_path_polyline(graph, cell_path, {p.x, p.y}, path_end_m, poly),
+                         options_.follower);
         // A fresh path from the cells goes straight through what the sonars remember: check it
-        // at once rather than after the replan interval, or the two paths take turns.
-        course_loop.detour_end_m.reset();
+        // at once rather than after the replan interval.
         course_loop.since_detour_s = std::numeric_limits<double>::infinity();
       }
     }
     std::optional<ObstacleSensing> sensing;
     if (course_loop.memory) {
+      forget_after_jump(course_loop, slam.estimate(), x.odometry(), memory_options,
+                        course->forget_memory_jump_m);
       sensing = x.sense();
       plan_round_obstacles(*sensing, slam.estimate(), *course, course_loop, follower,
                            options_.follower, period, run_);
@@ -688,6 +765,11 @@ Status TeachAndRepeat::navigate() {
     if (course) {
       if (!sensing) sensing = x.sense();
       cmd = on_course(x, std::move(*sensing), *course, course_loop, cmd, period, run_);
+      if (course_loop.memory && stalled(course_loop, *follower, period, course->detour)) {
+        course_loop.detour_end_m.reset();
+        course_loop.stuck = true;
+        seen_corrections = -1;  // plan afresh from the cells at the next update
+      }
     }
     if (!x.drive(cmd.v_m_per_s, cmd.omega_rad_per_s)) {
       return runtime_error("teach and repeat: navigation exceeded max_drive_s");

@@ -201,6 +201,10 @@ TEST(TeachAndRepeat, InvalidOptionsNameTheField) {
   ASSERT_TRUE(validate(o));
   EXPECT_NE(validate(o)->find("obstacle_course.detour: corridor_m"), std::string::npos);
   o.obstacle_course = ObstacleCourseOptions{};
+  o.obstacle_course->forget_memory_jump_m = 0.0;
+  ASSERT_TRUE(validate(o));
+  EXPECT_NE(validate(o)->find("forget_memory_jump_m"), std::string::npos);
+  o.obstacle_course = ObstacleCourseOptions{};
   o.obstacle_course->sonar_grid.resolution_m = 0.0;
   ASSERT_TRUE(validate(o));
   EXPECT_NE(validate(o)->find("obstacle_course.sonar_grid: resolution_m"), std::string::npos);

@@ -91,6 +91,11 @@ struct ObstacleCourseOptions {
   /// body.sonar_radius_m.
   SonarGridOptions sonar_grid;
   DetourOptions detour;
+  /// Ours: a SLAM correction that moves the estimate further than this from where odometry alone
+  /// would have put it forgets the sonar memory. Its cells were placed by the old estimate, so
+  /// after such a jump they stand where nothing is (a door post remembered in the doorway); the
+  /// sweeps rebuild what is around the robot within seconds.
+  double forget_memory_jump_m = 0.15;
 
   /// The thesis' avoidance with our strip and straight-on rules: obstacles count within the
   /// body's width plus 0.1 m of the line ahead, ranges start at the P3DX sonars' 0.2 m from the

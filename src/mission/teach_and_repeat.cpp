@@ -40,17 +40,23 @@ std::pair<int, int> goal_view_score(const fusion::NodeCreation& view) {
 }
 
 // The sonar echoes that lie within reach_m of the taught path (map frame), seen from the robot's
-// estimate: what stands now where the robot drove while teaching. Others read "no echo".
+// estimate: what stands now where the robot drove while teaching. Others read "no echo". An echo
+// comes from somewhere on its cone's arc, not only from the axis: it counts only when the arc's
+// middle and both ends lie within reach, so a wall beside the route seen at a cone's edge (near a
+// goal between walls, where the axis point falls on the route) is not taken for something new.
 ObstacleSensing new_on_route(ObstacleSensing sensing, const Pose2& T_map_robot,
-                             const std::vector<Vec2>& taught_m, double sensor_radius_m,
+                             const std::vector<Vec2>& taught_m, const P3dxBodyOptions& body,
                              double reach_m) {
   for (ObstacleRange& r : sensing.sonar) {
     if (!std::isfinite(r.range_m)) continue;
-    const double along = sensor_radius_m + r.range_m;
-    const Vec2 p =
-        T_map_robot * Vec2{along * std::cos(r.bearing_rad), along * std::sin(r.bearing_rad)};
-    if (distance_to_polyline(p, taught_m) > reach_m) {
-      r.range_m = std::numeric_limits<double>::infinity();
+    const double along = body.sonar_radius_m + r.range_m;
+    for (const double off : {0.0, -body.sonar_half_cone_rad, body.sonar_half_cone_rad}) {
+      const double a = r.bearing_rad + off;
+      const Vec2 p = T_map_robot * Vec2{along * std::cos(a), along * std::sin(a)};
+      if (distance_to_polyline(p, taught_m) > reach_m) {
+        r.range_m = std::numeric_limits<double>::infinity();
+        break;
+      }
     }
   }
   return sensing;
@@ -442,8 +448,8 @@ VelocityCommand on_course(TeachAndRepeatSimulation& x, ObstacleSensing sensing,
   loop.bumped = bump;
   if (!loop.avoidance) return cmd;
   if (course.only_new_obstacles) {
-    sensing = new_on_route(std::move(sensing), x.slam().estimate(), loop.taught_m,
-                           course.body.sonar_radius_m, course.body.body_radius_m);
+    sensing = new_on_route(std::move(sensing), x.slam().estimate(), loop.taught_m, course.body,
+                           course.body.body_radius_m);
   }
   cmd = loop.avoidance->filter(sensing, cmd, period_s);
   const AvoidanceAction a = loop.avoidance->last_action();

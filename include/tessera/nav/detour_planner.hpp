@@ -50,8 +50,10 @@ struct DetourOptions {
   /// seen count as free, so a route far from the path would lead through walls not yet seen.
   double corridor_m = 0.9;
   /// Clearances from occupied cells that the detour keeps, tried in turn (widest first). The
-  /// last one must be at least the body's radius.
-  std::vector<double> clearances_m = {0.45, 0.3};
+  /// last one must be at least the body's radius, and should be the avoidance's strip half-width
+  /// (0.35 m on the obstacle course): a gap narrower than that the planner would send the robot
+  /// through while the avoidance turned it away from the sides (decision 0031, second addendum).
+  std::vector<double> clearances_m = {0.45, 0.35};
   /// Step of the samples along the path.
   double sample_step_m = 0.05;
 };

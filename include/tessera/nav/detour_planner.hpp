@@ -37,10 +37,10 @@ struct DetourOptions {
   /// A robot further than this from its path (pushed off it by the avoidance), or one whose
   /// bumpers are pressed, is routed back to the path round what is remembered (the caller's rule).
   double off_path_m = 0.15;
-  /// A path (a detour or the path from the cells) along which the robot has not advanced 0.1 m in
-  /// this long is given up and the path planned afresh (the caller's rule): the avoidance can hold
-  /// a robot short of a detour's end, at a wall the detour was planned through before the sonars
-  /// had seen it.
+  /// A robot whose path still ahead (a detour's, or the one from the cells) has not shortened by
+  /// 0.1 m in this long is stuck: its path is planned afresh, and a route back to it round what is
+  /// remembered from where it stands (the caller's rule). The avoidance can hold a robot short of
+  /// a detour's end, at a wall the detour was planned through before the sonars had seen it.
   double give_up_after_s = 5.0;
   /// The detour rejoins the path this far past its last blocked point.
   double rejoin_after_m = 0.5;

@@ -346,13 +346,14 @@ struct CourseLoop {
 // Forgets the sonar memory when the estimate has jumped (a correction) further than jump_m from
 // where the odometry since the last update would have carried it.
 void forget_after_jump(CourseLoop& loop, const Pose2& estimate, const Pose2& odometry,
-                       const SonarGridOptions& memory, double jump_m) {
+                       double jump_m) {
   if (!loop.memory) return;
   if (loop.last_estimate_odometry) {
     const auto& [last_estimate, last_odometry] = *loop.last_estimate_odometry;
     const Pose2 predicted = last_estimate * (last_odometry.inverse() * odometry);
     if (std::hypot(estimate.x - predicted.x, estimate.y - predicted.y) > jump_m) {
-      loop.memory.emplace(memory);
+      // The options are copied first: emplace ends the old grid before it builds the new one.
+      loop.memory.emplace(SonarGridOptions{loop.memory->options()});
     }
   }
   loop.last_estimate_odometry = {estimate, odometry};
@@ -694,11 +695,11 @@ Status TeachAndRepeat::navigate() {
   std::optional<GreedyCellController> thesis;
   const std::optional<ObstacleCourseOptions>& course = options_.obstacle_course;
   CourseLoop course_loop;
-  SonarGridOptions memory_options = course ? course->sonar_grid : SonarGridOptions{};
   if (course && course->avoid) course_loop.avoidance.emplace(course->avoidance);
   if (course && course->detours && !greedy) {
-    memory_options.sensor_radius_m = course->body.sonar_radius_m;
-    course_loop.memory.emplace(memory_options);
+    SonarGridOptions memory = course->sonar_grid;
+    memory.sensor_radius_m = course->body.sonar_radius_m;
+    course_loop.memory.emplace(memory);
   }
   HeadingReversalCounter reversals(0.1);
   reversals.add(x.truth().theta);
@@ -759,8 +760,7 @@ Status TeachAndRepeat::navigate() {
     }
     std::optional<ObstacleSensing> sensing;
     if (course_loop.memory) {
-      forget_after_jump(course_loop, slam.estimate(), x.odometry(), memory_options,
-                        course->forget_memory_jump_m);
+      forget_after_jump(course_loop, slam.estimate(), x.odometry(), course->forget_memory_jump_m);
       sensing = x.sense();
       plan_round_obstacles(*sensing, slam.estimate(), *course, course_loop, follower,
                            options_.follower, period, run_);

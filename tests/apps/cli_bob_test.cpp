@@ -15,6 +15,8 @@
 namespace tessera {
 namespace {
 
+using support::count_lines;
+using support::read_bytes;
 using support::run_cli;
 using support::TempDir;
 using ::testing::HasSubstr;
@@ -42,11 +44,6 @@ std::string fmt_step(int n) {
 const std::vector<std::string> kRoom = {"############", "#..........#", "#..........#",
                                         "#...##.....#", "#...##.....#", "#..........#",
                                         "#.....#....#", "#..........#", "############"};
-
-std::string read_bytes(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 TEST(CliBob, WritesMonitorMapAndReportForBothVariants) {
   TempDir dir;
@@ -144,10 +141,6 @@ TEST(CliBob, MonitorDirHoldsOnePictureForTheStartAndOneForEveryMove) {
   EXPECT_TRUE(std::filesystem::exists(monitor / "step_00000.png"));
   EXPECT_EQ(read_bytes(monitor / ("step_" + fmt_step(moves) + ".png")),
             read_bytes(out / "monitor.png"));
-}
-
-int count_lines(const std::string& s) {
-  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
 }
 
 void expect_input_error(const TempDir& dir, const std::string& args, const std::string& problem) {

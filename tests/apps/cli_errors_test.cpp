@@ -12,16 +12,13 @@
 namespace tessera {
 namespace {
 
+using support::count_lines;
 using support::run_cli;
 using support::TempDir;
 using ::testing::HasSubstr;
 
 std::string pgm(int width, int height, const std::string& pixels) {
   return "P5\n" + std::to_string(width) + " " + std::to_string(height) + "\n255\n" + pixels;
-}
-
-int count_lines(const std::string& s) {
-  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
 }
 
 /// Runs explore on `world` into an output folder that must not appear; checks the message.

@@ -14,17 +14,11 @@
 namespace tessera {
 namespace {
 
+using support::count_lines;
+using support::read_json;
 using support::run_cli;
 using support::TempDir;
 using ::testing::HasSubstr;
-
-int count_lines(const std::string& s) {
-  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
-}
-
-nlohmann::json read_json(const std::filesystem::path& path) {
-  return nlohmann::json::parse(support::read_bytes(path));
-}
 
 /// A planar TUM trajectory: straight ahead at 1 m/s, one pose a second, stamps 0..4 s.
 constexpr const char* kStraight =

@@ -13,14 +13,10 @@
 namespace tessera {
 namespace {
 
+using support::read_json;
 using support::run_cli;
 using support::TempDir;
 using ::testing::HasSubstr;
-
-nlohmann::json read_json(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
 
 std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -18,15 +18,12 @@
 namespace tessera {
 namespace {
 
+using support::intel_log;
 using support::read_bytes;
 using support::run_cli;
 using support::TempDir;
 using support::write_bytes;
 using ::testing::HasSubstr;
-
-std::filesystem::path intel_log() {
-  return support::data_path("laser/intel/intel-raw-first5505-sot.clf");
-}
 
 // The first 120 s of Intel mapped and saved, shared by the tests.
 const std::filesystem::path& intel_session() {

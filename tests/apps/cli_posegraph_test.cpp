@@ -13,13 +13,10 @@
 namespace tessera {
 namespace {
 
+using support::count_lines;
 using support::run_cli;
 using support::TempDir;
 using ::testing::HasSubstr;
-
-int count_lines(const std::string& s) {
-  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
-}
 
 int count_of(const std::string& text, const std::string& word) {
   int n = 0;

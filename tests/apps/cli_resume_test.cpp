@@ -31,15 +31,12 @@ extern char** environ;
 namespace tessera {
 namespace {
 
+using support::intel_log;
 using support::read_bytes;
 using support::run_cli;
 using support::TempDir;
 using support::write_bytes;
 using ::testing::HasSubstr;
-
-std::filesystem::path intel_log() {
-  return support::data_path("laser/intel/intel-raw-first5505-sot.clf");
-}
 
 // The first 90 s of Intel mapped and saved, and 0-180 s in one run, shared by the tests.
 const std::filesystem::path& runs() {

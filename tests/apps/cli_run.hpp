@@ -1,13 +1,16 @@
 #pragma once
-// Runs the tessera program as a user would and captures what it says.
+// Runs the tessera program as a user would and captures what it says; reads what it writes.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
+#include "support/data.hpp"
 #include "support/temp_dir.hpp"
 
 namespace tessera::support {
@@ -29,6 +32,20 @@ inline CliRun run_cli(const std::string& args) {
   const int status = pclose(pipe);
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return run;
+}
+
+inline int count_lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
+
+/// A report or other JSON file the program wrote.
+inline nlohmann::json read_json(const std::filesystem::path& path) {
+  return nlohmann::json::parse(read_bytes(path));
+}
+
+/// The Intel raw log (the first 5,505 scans) that the session tests map.
+inline std::filesystem::path intel_log() {
+  return data_path("laser/intel/intel-raw-first5505-sot.clf");
 }
 
 }  // namespace tessera::support

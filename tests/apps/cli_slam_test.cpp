@@ -15,14 +15,10 @@
 namespace tessera {
 namespace {
 
+using support::read_bytes;
 using support::run_cli;
 using support::TempDir;
 using ::testing::HasSubstr;
-
-std::string read_bytes(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 /// The first `scans` FLASER lines of the Intel raw log, as a log of their own.
 std::filesystem::path intel_slice(const TempDir& dir, int scans) {

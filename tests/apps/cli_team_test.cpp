@@ -17,12 +17,8 @@
 namespace tessera {
 namespace {
 
+using support::read_json;
 using ::testing::HasSubstr;
-
-nlohmann::json read_json(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
 
 // Half real time: four processes (three robots' SLAM and the simulator) keep up even in the
 // sanitizer build beside other tests, where robots that fall behind the simulator would act on

@@ -13,7 +13,6 @@ namespace tessera {
 namespace {
 
 using ::testing::HasSubstr;
-constexpr double kPi = std::numbers::pi;
 
 /// The relation of the motion between two poses of `truth` (what a person would check).
 Relation relation_between(const StampedPose2& a, const StampedPose2& b) {
@@ -21,19 +20,22 @@ Relation relation_between(const StampedPose2& a, const StampedPose2& b) {
 }
 
 TEST(InterpolatePose, IsLinearInTranslationAndHeadingBetweenTwoPoses) {
-  const std::vector<StampedPose2> sorted = {{0.0, {0.0, 0.0, 0.0}}, {2.0, {2.0, 4.0, kPi / 2.0}}};
+  const std::vector<StampedPose2> sorted = {{0.0, {0.0, 0.0, 0.0}},
+                                            {2.0, {2.0, 4.0, std::numbers::pi / 2.0}}};
   const std::optional<Pose2> p = interpolate_pose(sorted, 0.5);
   ASSERT_TRUE(p.has_value());
   EXPECT_DOUBLE_EQ(p->x, 0.5);
   EXPECT_DOUBLE_EQ(p->y, 1.0);
-  EXPECT_DOUBLE_EQ(p->theta, kPi / 8.0);
+  EXPECT_DOUBLE_EQ(p->theta, std::numbers::pi / 8.0);
 }
 
 TEST(InterpolatePose, TurnsAlongTheShortestArcAcrossPlusMinusPi) {
   // From 3.0 rad to -3.0 rad is 2 pi - 6 = 0.283 rad counter-clockwise, not 6 rad clockwise.
   const std::vector<StampedPose2> sorted = {{0.0, {0.0, 0.0, 3.0}}, {1.0, {0.0, 0.0, -3.0}}};
-  EXPECT_NEAR(interpolate_pose(sorted, 0.25)->theta, 3.0 + 0.25 * (2.0 * kPi - 6.0), 1e-12);
-  EXPECT_NEAR(interpolate_pose(sorted, 0.75)->theta, -3.0 - 0.25 * (2.0 * kPi - 6.0), 1e-12);
+  EXPECT_NEAR(interpolate_pose(sorted, 0.25)->theta, 3.0 + 0.25 * (2.0 * std::numbers::pi - 6.0),
+              1e-12);
+  EXPECT_NEAR(interpolate_pose(sorted, 0.75)->theta, -3.0 - 0.25 * (2.0 * std::numbers::pi - 6.0),
+              1e-12);
 }
 
 TEST(InterpolatePose, ReturnsAPoseStampedExactlyAndNothingOutsideTheSpan) {
@@ -141,8 +143,8 @@ TEST(RelationMetric, ErrorComposesInKummerleOrder) {
   // (2, 0, 0.5), whose inverse is (-2 cos 0.5, 2 sin 0.5, -0.5):
   // E = (1,0,0) * (2,0,0.5)^-1 = (1 - 2 cos 0.5, 2 sin 0.5, -0.5), |t| = 1.22 m. The other order,
   // relation^-1 * (1,0,0) = (-cos 0.5, sin 0.5, -0.5), would give |t| = 1 m.
-  const std::vector<StampedPose2> turned = {{0.0, {0.0, 0.0, kPi / 2.0}},
-                                            {1.0, {0.0, 1.0, kPi / 2.0}}};
+  const std::vector<StampedPose2> turned = {{0.0, {0.0, 0.0, std::numbers::pi / 2.0}},
+                                            {1.0, {0.0, 1.0, std::numbers::pi / 2.0}}};
   const Result<RelationMetric> m = relation_metric(turned, {{0.0, 1.0, {2.0, 0.0, 0.5}}});
   ASSERT_TRUE(m.ok()) << m.error().message;
   EXPECT_NEAR(m->trans_mean_m, std::hypot(1.0 - 2.0 * std::cos(0.5), 2.0 * std::sin(0.5)), 1e-12);
@@ -152,8 +154,9 @@ TEST(RelationMetric, ErrorComposesInKummerleOrder) {
 TEST(RelationMetric, InterpolatesTheEstimateBetweenItsPoses) {
   // Poses at 0 s and 2 s; the relation's stamps fall at 0.5 s and 1.5 s, where the estimate is at
   // x = 0.5 and x = 1.5 heading pi/8 and 3 pi/8: the true motion between them is that exactly.
-  const std::vector<StampedPose2> estimate = {{0.0, {0.0, 0.0, 0.0}}, {2.0, {2.0, 0.0, kPi / 2.0}}};
-  const Pose2 x1{0.5, 0.0, kPi / 8.0}, x2{1.5, 0.0, 3.0 * kPi / 8.0};
+  const std::vector<StampedPose2> estimate = {{0.0, {0.0, 0.0, 0.0}},
+                                              {2.0, {2.0, 0.0, std::numbers::pi / 2.0}}};
+  const Pose2 x1{0.5, 0.0, std::numbers::pi / 8.0}, x2{1.5, 0.0, 3.0 * std::numbers::pi / 8.0};
   const Result<RelationMetric> exact = relation_metric(estimate, {{0.5, 1.5, between(x1, x2)}});
   ASSERT_TRUE(exact.ok()) << exact.error().message;
   EXPECT_NEAR(exact->trans_mean_m, 0.0, 1e-12);
@@ -162,13 +165,13 @@ TEST(RelationMetric, InterpolatesTheEstimateBetweenItsPoses) {
   const Pose2 no_turn{between(x1, x2).x, between(x1, x2).y, 0.0};
   const Result<RelationMetric> off = relation_metric(estimate, {{0.5, 1.5, no_turn}});
   ASSERT_TRUE(off.ok());
-  EXPECT_NEAR(off->rot_mean_rad, kPi / 4.0, 1e-12);
+  EXPECT_NEAR(off->rot_mean_rad, std::numbers::pi / 4.0, 1e-12);
 }
 
 TEST(RelationMetric, AngleErrorWrapsAtPlusMinusPi) {
   // The estimate turns from 3.1 to -3.1 rad: 2 pi - 6.2 = 0.083 rad counter-clockwise.
   const std::vector<StampedPose2> estimate = {{0.0, {0.0, 0.0, 3.1}}, {1.0, {0.0, 0.0, -3.1}}};
-  const double turn = 2.0 * kPi - 6.2;
+  const double turn = 2.0 * std::numbers::pi - 6.2;
   const Result<RelationMetric> exact = relation_metric(estimate, {{0.0, 1.0, {0.0, 0.0, turn}}});
   ASSERT_TRUE(exact.ok());
   EXPECT_NEAR(exact->rot_mean_rad, 0.0, 1e-12);
@@ -177,9 +180,9 @@ TEST(RelationMetric, AngleErrorWrapsAtPlusMinusPi) {
   EXPECT_NEAR(still->rot_mean_rad, turn, 1e-12);  // not 6.2 rad
   // A relation of -(pi - 0.05) against an estimate of +(pi - 0.05): off by 0.1 rad across pi.
   const std::vector<StampedPose2> half_turn = {{0.0, {0.0, 0.0, 0.0}},
-                                               {1.0, {0.0, 0.0, kPi - 0.05}}};
+                                               {1.0, {0.0, 0.0, std::numbers::pi - 0.05}}};
   const Result<RelationMetric> across =
-      relation_metric(half_turn, {{0.0, 1.0, {0.0, 0.0, -(kPi - 0.05)}}});
+      relation_metric(half_turn, {{0.0, 1.0, {0.0, 0.0, -(std::numbers::pi - 0.05)}}});
   ASSERT_TRUE(across.ok());
   EXPECT_NEAR(across->rot_mean_rad, 0.1, 1e-12);
 }

@@ -9,13 +9,11 @@
 #include <ostream>
 #include <vector>
 
+#include "support/cell_print.hpp"
 #include "tessera/core/rng.hpp"
 #include "tessera/grid/bit_grid.hpp"
 
 namespace tessera {
-
-// Readable gmock output for cells.
-inline void PrintTo(const Cell& c, std::ostream* os) { *os << "(" << c.x << ", " << c.y << ")"; }
 
 namespace {
 

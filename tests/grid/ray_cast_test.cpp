@@ -7,12 +7,10 @@
 #include <ostream>
 #include <vector>
 
+#include "support/cell_print.hpp"
 #include "tessera/core/rng.hpp"
 
 namespace tessera {
-
-// Readable gmock output for cells.
-inline void PrintTo(const Cell& c, std::ostream* os) { *os << "(" << c.x << ", " << c.y << ")"; }
 
 namespace {
 

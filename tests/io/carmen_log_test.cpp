@@ -17,8 +17,7 @@ using io_test::TempDir;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+constexpr double kDeg = std::numbers::pi / 180.0;
 
 /// `n` copies of `range_m`, space-separated.
 std::string ranges(int n, const std::string& range_m) {
@@ -39,8 +38,8 @@ std::string flaser(int n, const std::string& range_m = "2.5") {
   return old_laser("FLASER", n, ranges(n, range_m));
 }
 
-Result<LaserLog> read_text(const TempDir& dir, const std::string& text,
-                           const CarmenReadOptions& options = {}) {
+Result<LaserLog> read_carmen_text(const TempDir& dir, const std::string& text,
+                                  const CarmenReadOptions& options = {}) {
   const auto path = dir / "log.clf";
   io_test::write_bytes(path, text);
   return read_carmen_log(path, options);
@@ -48,7 +47,7 @@ Result<LaserLog> read_text(const TempDir& dir, const std::string& text,
 
 TEST(CarmenLog, FlaserGivesTheOdometryPoseTheIpcStampAndCarmensBeamGeometry) {
   TempDir dir;
-  const Result<LaserLog> log = read_text(dir, old_laser("FLASER", 180, ranges(180, "3.25")));
+  const Result<LaserLog> log = read_carmen_text(dir, old_laser("FLASER", 180, ranges(180, "3.25")));
   ASSERT_TRUE(log.ok()) << log.error().message;
   ASSERT_EQ(log->scans.size(), 1u);
   const StampedScan& s = log->scans[0];
@@ -58,7 +57,7 @@ TEST(CarmenLog, FlaserGivesTheOdometryPoseTheIpcStampAndCarmensBeamGeometry) {
   EXPECT_DOUBLE_EQ(s.odometry.theta, 0.5);
   EXPECT_NEAR(s.laser_in_robot.x, 0.0, 1e-12);
   EXPECT_NEAR(s.laser_in_robot.theta, 0.0, 1e-12);
-  EXPECT_DOUBLE_EQ(s.scan.angle_min_rad, -kPi / 2.0);
+  EXPECT_DOUBLE_EQ(s.scan.angle_min_rad, -std::numbers::pi / 2.0);
   EXPECT_DOUBLE_EQ(s.scan.angle_increment_rad, kDeg);
   ASSERT_EQ(s.scan.ranges_m.size(), 180u);
   EXPECT_DOUBLE_EQ(s.scan.ranges_m[179], 3.25);
@@ -68,23 +67,24 @@ TEST(CarmenLog, FlaserGivesTheOdometryPoseTheIpcStampAndCarmensBeamGeometry) {
 
 TEST(CarmenLog, OldFormatBeamSpacingFollowsCarmensGuessFromTheBeamCount) {
   const std::vector<std::pair<int, double>> cases = {
-      {180, kDeg},        {181, kDeg},        {360, 0.5 * kDeg}, {361, 0.5 * kDeg},
-      {400, 0.25 * kDeg}, {401, 0.25 * kDeg}, {5, kPi / 4.0},    {1, 0.0}};
+      {180, kDeg},        {181, kDeg},        {360, 0.5 * kDeg},           {361, 0.5 * kDeg},
+      {400, 0.25 * kDeg}, {401, 0.25 * kDeg}, {5, std::numbers::pi / 4.0}, {1, 0.0}};
   for (const auto& [beams, increment_rad] : cases) {
     TempDir dir;
-    const Result<LaserLog> log = read_text(dir, flaser(beams));
+    const Result<LaserLog> log = read_carmen_text(dir, flaser(beams));
     ASSERT_TRUE(log.ok()) << log.error().message;
     EXPECT_DOUBLE_EQ(log->scans[0].scan.angle_increment_rad, increment_rad) << beams << " beams";
-    EXPECT_DOUBLE_EQ(log->scans[0].scan.angle_min_rad, -kPi / 2.0) << beams << " beams";
+    EXPECT_DOUBLE_EQ(log->scans[0].scan.angle_min_rad, -std::numbers::pi / 2.0)
+        << beams << " beams";
   }
 }
 
 TEST(CarmenLog, LaserPoseOffsetBecomesLaserInRobot) {
   // FR079's first scan: the laser sits 0.04 m behind the odometry pose (robot_frontlaser_offset).
   TempDir dir;
-  const Result<LaserLog> log =
-      read_text(dir, old_laser("FLASER", 3, "1 2 3", "-3.034287 8.291214 -3.120965",
-                               "-2.994295 8.292039 -3.120965", "1211.520329 magnum 0.015885"));
+  const Result<LaserLog> log = read_carmen_text(
+      dir, old_laser("FLASER", 3, "1 2 3", "-3.034287 8.291214 -3.120965",
+                     "-2.994295 8.292039 -3.120965", "1211.520329 magnum 0.015885"));
   ASSERT_TRUE(log.ok()) << log.error().message;
   const StampedScan& s = log->scans[0];
   EXPECT_NEAR(s.laser_in_robot.x, -0.04, 1e-5);
@@ -97,17 +97,18 @@ TEST(CarmenLog, LaserPoseOffsetBecomesLaserInRobot) {
 TEST(CarmenLog, RearLaserIsSkippedUnlessAskedFor) {
   TempDir dir;
   const std::string text = flaser(3) + old_laser("RLASER", 2, "4 5");
-  const Result<LaserLog> front_only = read_text(dir, text);
+  const Result<LaserLog> front_only = read_carmen_text(dir, text);
   ASSERT_TRUE(front_only.ok()) << front_only.error().message;
   EXPECT_EQ(front_only->scans.size(), 1u);
 
   CarmenReadOptions options;
   options.rear_laser = true;
-  const Result<LaserLog> both = read_text(dir, text, options);
+  const Result<LaserLog> both = read_carmen_text(dir, text, options);
   ASSERT_TRUE(both.ok()) << both.error().message;
   ASSERT_EQ(both->scans.size(), 2u);
   EXPECT_EQ(both->scans[1].scan.ranges_m, (std::vector<double>{4.0, 5.0}));
-  EXPECT_NEAR(std::abs(both->scans[1].laser_in_robot.theta), kPi, 1e-12) << "faces backwards";
+  EXPECT_NEAR(std::abs(both->scans[1].laser_in_robot.theta), std::numbers::pi, 1e-12)
+      << "faces backwards";
   EXPECT_NEAR(both->scans[0].laser_in_robot.theta, 0.0, 1e-12);
 }
 
@@ -116,22 +117,23 @@ TEST(CarmenLog, RearLaserPoseThatIsAlreadyTurnedIsNotTurnedTwice) {
   CarmenReadOptions options;
   options.rear_laser = true;
   const Result<LaserLog> log =
-      read_text(dir, old_laser("RLASER", 2, "4 5", "0 0 0", "-0.1 0 3.14159"), options);
+      read_carmen_text(dir, old_laser("RLASER", 2, "4 5", "0 0 0", "-0.1 0 3.14159"), options);
   ASSERT_TRUE(log.ok()) << log.error().message;
-  EXPECT_NEAR(std::abs(log->scans[0].laser_in_robot.theta), kPi, 1e-4);
+  EXPECT_NEAR(std::abs(log->scans[0].laser_in_robot.theta), std::numbers::pi, 1e-4);
   EXPECT_NEAR(log->scans[0].laser_in_robot.x, -0.1, 1e-12);
 }
 
 TEST(CarmenLog, OdomLinesBecomeOdometryReadings) {
   TempDir dir;
-  const Result<LaserLog> log = read_text(
+  const Result<LaserLog> log = read_carmen_text(
       dir, "ODOM 1 2 0.3 0.1 0.2 0 5.5 host 0.1\nODOM 1.5 2 4 0 0 0 6.5 host 0.2\n" + flaser(3));
   ASSERT_TRUE(log.ok()) << log.error().message;
   ASSERT_EQ(log->odometry.size(), 2u);
   EXPECT_DOUBLE_EQ(log->odometry[0].t_s, 5.5);
   EXPECT_DOUBLE_EQ(log->odometry[0].pose.x, 1.0);
   EXPECT_DOUBLE_EQ(log->odometry[0].pose.theta, 0.3);
-  EXPECT_NEAR(log->odometry[1].pose.theta, 4.0 - 2.0 * kPi, 1e-12) << "wrapped into [-pi, pi)";
+  EXPECT_NEAR(log->odometry[1].pose.theta, 4.0 - 2.0 * std::numbers::pi, 1e-12)
+      << "wrapped into [-pi, pi)";
 }
 
 TEST(CarmenLog, RobotLaserCarriesItsOwnGeometryAndMaximumRange) {
@@ -140,7 +142,7 @@ TEST(CarmenLog, RobotLaserCarriesItsOwnGeometryAndMaximumRange) {
   const std::string line =
       "ROBOTLASER1 0 -1.5 3.0 0.01 30 0.01 0 4 1 2 30 4 2 0.5 0.6 2.2 0 0 2 0 0 0.1 0.2 0.3 0.4 "
       "0.5 7.25 host 0.1\n";
-  const Result<LaserLog> log = read_text(dir, line);
+  const Result<LaserLog> log = read_carmen_text(dir, line);
   ASSERT_TRUE(log.ok()) << log.error().message;
   const StampedScan& s = log->scans[0];
   EXPECT_DOUBLE_EQ(s.scan.angle_min_rad, -1.5);
@@ -159,14 +161,14 @@ TEST(CarmenLog, RawLaserOdometryIsInterpolatedBetweenTheOdomLinesAroundIt) {
   const std::string raw = "RAWLASER1 0 -1.57 3.14 0.0175 80 0.01 0 3 1 2 3 0 ";
   const std::string text = "ODOM 0 0 3.0 0 0 0 10 host 10\n" + raw + "10.25 host 10.25\n" +
                            "ODOM 4 2 -3.0 0 0 0 11 host 11\n" + raw + "12 host 12\n";
-  const Result<LaserLog> log = read_text(dir, text);
+  const Result<LaserLog> log = read_carmen_text(dir, text);
   ASSERT_TRUE(log.ok()) << log.error().message;
   ASSERT_EQ(log->scans.size(), 2u);
   const Pose2& a = log->scans[0].odometry;
   EXPECT_NEAR(a.x, 1.0, 1e-12);
   EXPECT_NEAR(a.y, 0.5, 1e-12);
   // Shortest arc from 3.0 to -3.0 crosses pi: a quarter of the 0.283 rad step.
-  EXPECT_NEAR(a.theta, 3.0 + 0.25 * (2.0 * kPi - 6.0), 1e-12);
+  EXPECT_NEAR(a.theta, 3.0 + 0.25 * (2.0 * std::numbers::pi - 6.0), 1e-12);
   EXPECT_EQ(log->scans[0].laser_in_robot.x, 0.0);
   // After the last ODOM: its pose.
   EXPECT_DOUBLE_EQ(log->scans[1].odometry.x, 4.0);
@@ -177,7 +179,7 @@ TEST(CarmenLog, RawLaserBeforeAnyOdomTakesTheFirstOdom) {
   TempDir dir;
   const std::string text =
       "RAWLASER1 0 -1.57 3.14 0.0175 80 0.01 0 2 1 2 0 9 host 9\nODOM 5 6 0 0 0 0 10 host 10\n";
-  const Result<LaserLog> log = read_text(dir, text);
+  const Result<LaserLog> log = read_carmen_text(dir, text);
   ASSERT_TRUE(log.ok()) << log.error().message;
   EXPECT_DOUBLE_EQ(log->scans[0].odometry.x, 5.0);
   EXPECT_DOUBLE_EQ(log->scans[0].odometry.y, 6.0);
@@ -189,7 +191,7 @@ TEST(CarmenLog, SkipsCommentsBlankLinesAndOtherMessages) {
       "# CARMEN Logfile\n\n   \nPARAM robot_frontlaser_offset 0.0 nohost 0\nNEFF 29.5\n"
       "TRUEPOS 1 2 3 4 5 6 1 host 1\nSYNC tag 1 host 1\nGPSNMEA whatever\r\n\tFLASER\t2 1 2 0 0 0 "
       "0 0 0 1 host 1\r\n";
-  const Result<LaserLog> log = read_text(dir, text);
+  const Result<LaserLog> log = read_carmen_text(dir, text);
   ASSERT_TRUE(log.ok()) << log.error().message;
   ASSERT_EQ(log->scans.size(), 1u);
   EXPECT_EQ(log->scans[0].scan.ranges_m, (std::vector<double>{1.0, 2.0}));
@@ -198,8 +200,8 @@ TEST(CarmenLog, SkipsCommentsBlankLinesAndOtherMessages) {
 
 TEST(CarmenLog, NoReturnThresholdIsJustBelowTheLargestOldFormatReading) {
   TempDir dir;
-  const Result<LaserLog> log =
-      read_text(dir, old_laser("FLASER", 3, "1.5 81.83 3") + old_laser("FLASER", 3, "2 81.8 81.5"));
+  const Result<LaserLog> log = read_carmen_text(
+      dir, old_laser("FLASER", 3, "1.5 81.83 3") + old_laser("FLASER", 3, "2 81.8 81.5"));
   ASSERT_TRUE(log.ok()) << log.error().message;
   for (const StampedScan& s : log->scans) EXPECT_NEAR(s.scan.max_range_m, 81.73, 1e-9);
   EXPECT_GE(log->scans[0].scan.ranges_m[1], log->scans[0].scan.max_range_m);
@@ -213,7 +215,7 @@ TEST(CarmenLog, ExplicitNoReturnAppliesToEveryScan) {
   options.no_return_m = 50.0;
   const std::string robot_laser =
       "ROBOTLASER1 0 -1.5 3.0 0.01 30 0.01 0 1 5 0 0 0 0 0 0 0 0 0 0 0 0 7 host 7\n";
-  const Result<LaserLog> log = read_text(dir, flaser(2, "81.83") + robot_laser, options);
+  const Result<LaserLog> log = read_carmen_text(dir, flaser(2, "81.83") + robot_laser, options);
   ASSERT_TRUE(log.ok()) << log.error().message;
   ASSERT_EQ(log->scans.size(), 2u);
   EXPECT_DOUBLE_EQ(log->scans[0].scan.max_range_m, 50.0);
@@ -226,7 +228,7 @@ TEST(CarmenLog, BackwardStampsCountsOnlyStrictDecreasesAndKeepsFileOrder) {
   for (const char* t : {"1", "2", "1.5", "1.5", "3", "0.5"}) {
     text += old_laser("FLASER", 1, "1", "0 0 0", "", std::string(t) + " host 0");
   }
-  const Result<LaserLog> log = read_text(dir, text);
+  const Result<LaserLog> log = read_carmen_text(dir, text);
   ASSERT_TRUE(log.ok()) << log.error().message;
   EXPECT_EQ(log->backward_stamps, 2);
   ASSERT_EQ(log->scans.size(), 6u);
@@ -239,7 +241,7 @@ TEST(CarmenLog, NegativeNoReturnOptionIsAUsageError) {
   CarmenReadOptions options;
   options.no_return_m = -1.0;
   EXPECT_TRUE(validate(options).has_value());
-  const Result<LaserLog> log = read_text(dir, flaser(2), options);
+  const Result<LaserLog> log = read_carmen_text(dir, flaser(2), options);
   ASSERT_FALSE(log.ok());
   EXPECT_EQ(log.error().kind, ErrorKind::kUsage);
   EXPECT_THAT(log.error().message, HasSubstr("no_return_m"));
@@ -278,7 +280,7 @@ TEST_P(CarmenLogBadInput, IsAnInputErrorNamingFileLineAndProblem) {
   TempDir dir;
   CarmenReadOptions options;
   options.rear_laser = bad.rear_laser;
-  const Result<LaserLog> log = read_text(dir, bad.text, options);
+  const Result<LaserLog> log = read_carmen_text(dir, bad.text, options);
   ASSERT_FALSE(log.ok());
   EXPECT_EQ(log.error().kind, ErrorKind::kInput);
   EXPECT_THAT(log.error().message, StartsWith((dir / bad.where).string()));

@@ -16,17 +16,17 @@ using io_test::TempDir;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-Result<posegraph::PoseGraph> read_text(const TempDir& dir, const std::string& text) {
+Result<posegraph::PoseGraph> read_g2o_text(const TempDir& dir, const std::string& text) {
   io_test::write_bytes(dir / "g.g2o", text);
   return read_g2o(dir / "g.g2o");
 }
 
 TEST(G2oFile, MapsVertexIdsToNodeIndicesInFileOrder) {
   TempDir dir;
-  const Result<posegraph::PoseGraph> g =
-      read_text(dir,
-                "# a comment\nVERTEX_SE2 20 1 2 0.5\nVERTEX_SE2 10 0 0 0\n\nFIX 10\n"
-                "EDGE_SE2 10 20 1 2 0.5 11 1 2 22 3 33\r\nEDGE_SE2\t20  10 -1 0 7 1 0 0 1 0 1\n");
+  const Result<posegraph::PoseGraph> g = read_g2o_text(
+      dir,
+      "# a comment\nVERTEX_SE2 20 1 2 0.5\nVERTEX_SE2 10 0 0 0\n\nFIX 10\n"
+      "EDGE_SE2 10 20 1 2 0.5 11 1 2 22 3 33\r\nEDGE_SE2\t20  10 -1 0 7 1 0 0 1 0 1\n");
   ASSERT_TRUE(g.ok()) << g.error().message;
   ASSERT_EQ(g->poses.size(), 2u);
   EXPECT_EQ(g->ids, (std::vector<int>{20, 10}));
@@ -47,7 +47,7 @@ TEST(G2oFile, MapsVertexIdsToNodeIndicesInFileOrder) {
 TEST(G2oFile, EdgesOnlyFileChainsTheOdometryEdgesFromTheOrigin) {
   TempDir dir;
   const std::string info = " 1 0 0 1 0 1\n";
-  const Result<posegraph::PoseGraph> g = read_text(
+  const Result<posegraph::PoseGraph> g = read_g2o_text(
       dir, "EDGE_SE2 0 2 9 9 0" + info +  // a loop edge
                "EDGE_SE2 1 2 1 0 1.5707963267948966" + info + "EDGE_SE2 0 1 2 0 0" + info);
   ASSERT_TRUE(g.ok()) << g.error().message;
@@ -108,9 +108,9 @@ TEST(G2oFile, FailedWriteLeavesNothingBehind) {
   EXPECT_TRUE(io_test::files_in(dir.path()).empty());
 }
 
-void expect_bad(const std::string& text, const std::string& where, const std::string& phrase) {
+void expect_bad_g2o(const std::string& text, const std::string& where, const std::string& phrase) {
   TempDir dir;
-  const Result<posegraph::PoseGraph> g = read_text(dir, text);
+  const Result<posegraph::PoseGraph> g = read_g2o_text(dir, text);
   ASSERT_FALSE(g.ok());
   EXPECT_EQ(g.error().kind, ErrorKind::kInput);
   EXPECT_THAT(g.error().message, StartsWith((dir / where).string()));
@@ -120,55 +120,56 @@ void expect_bad(const std::string& text, const std::string& where, const std::st
 const std::string kVertices = "VERTEX_SE2 0 0 0 0\nVERTEX_SE2 1 1 0 0\n";
 
 TEST(G2oFile, EdgeNamingAMissingVertexIsRejected) {
-  expect_bad(kVertices + "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 1\nEDGE_SE2 1 7 1 0 0 1 0 0 1 0 1\n",
-             "g.g2o:4:", "EDGE_SE2 names vertex 7, which has no VERTEX_SE2 line");
+  expect_bad_g2o(kVertices + "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 1\nEDGE_SE2 1 7 1 0 0 1 0 0 1 0 1\n",
+                 "g.g2o:4:", "EDGE_SE2 names vertex 7, which has no VERTEX_SE2 line");
 }
 
 TEST(G2oFile, EdgesOnlyVertexOutsideTheOdometryChainIsRejected) {
-  expect_bad("EDGE_SE2 0 1 1 0 0 1 0 0 1 0 1\nEDGE_SE2 2 3 1 0 0 1 0 0 1 0 1\n",
-             "g.g2o:2:", "vertex 2 is not reached by the odometry chain");
+  expect_bad_g2o("EDGE_SE2 0 1 1 0 0 1 0 0 1 0 1\nEDGE_SE2 2 3 1 0 0 1 0 0 1 0 1\n",
+                 "g.g2o:2:", "vertex 2 is not reached by the odometry chain");
 }
 
 TEST(G2oFile, VertexWithTooFewFieldsIsRejected) {
-  expect_bad("VERTEX_SE2 0 0 0\n", "g.g2o:1:", "VERTEX_SE2 line has 4 fields, expected 5");
+  expect_bad_g2o("VERTEX_SE2 0 0 0\n", "g.g2o:1:", "VERTEX_SE2 line has 4 fields, expected 5");
 }
 
 TEST(G2oFile, EdgeWithTooFewFieldsIsRejected) {
-  expect_bad(kVertices + "EDGE_SE2 0 1 1 0 0 1 0 0 1 0\n",
-             "g.g2o:3:", "EDGE_SE2 line has 11 fields, expected 12");
+  expect_bad_g2o(kVertices + "EDGE_SE2 0 1 1 0 0 1 0 0 1 0\n",
+                 "g.g2o:3:", "EDGE_SE2 line has 11 fields, expected 12");
 }
 
 TEST(G2oFile, NonIntegerVertexIdIsRejected) {
-  expect_bad("VERTEX_SE2 1.5 0 0 0\n", "g.g2o:1:", "vertex id '1.5' is not an integer");
+  expect_bad_g2o("VERTEX_SE2 1.5 0 0 0\n", "g.g2o:1:", "vertex id '1.5' is not an integer");
 }
 
 TEST(G2oFile, NonNumericFieldIsRejected) {
-  expect_bad(kVertices + "EDGE_SE2 0 1 1 0 0 1 0 0 one 0 1\n",
-             "g.g2o:3:", "EDGE_SE2 I22 is 'one', expected a finite number");
+  expect_bad_g2o(kVertices + "EDGE_SE2 0 1 1 0 0 1 0 0 one 0 1\n",
+                 "g.g2o:3:", "EDGE_SE2 I22 is 'one', expected a finite number");
 }
 
 TEST(G2oFile, NanPoseIsRejected) {
-  expect_bad("VERTEX_SE2 0 nan 0 0\n", "g.g2o:1:", "VERTEX_SE2 x is 'nan'");
+  expect_bad_g2o("VERTEX_SE2 0 nan 0 0\n", "g.g2o:1:", "VERTEX_SE2 x is 'nan'");
 }
 
 TEST(G2oFile, RepeatedVertexIsRejected) {
-  expect_bad(kVertices + "VERTEX_SE2 0 5 5 0\n",
-             "g.g2o:3:", "vertex 0 is already defined on line 1");
+  expect_bad_g2o(kVertices + "VERTEX_SE2 0 5 5 0\n",
+                 "g.g2o:3:", "vertex 0 is already defined on line 1");
 }
 
 TEST(G2oFile, EdgeFromAVertexToItselfIsRejected) {
-  expect_bad(kVertices + "EDGE_SE2 1 1 0 0 0 1 0 0 1 0 1\n",
-             "g.g2o:3:", "joins vertex 1 to itself");
+  expect_bad_g2o(kVertices + "EDGE_SE2 1 1 0 0 0 1 0 0 1 0 1\n",
+                 "g.g2o:3:", "joins vertex 1 to itself");
 }
 
 TEST(G2oFile, InformationThatIsNotPositiveDefiniteIsRejected) {
-  expect_bad(kVertices + "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 0\n",
-             "g.g2o:3:", "EDGE_SE2 0 1: information matrix is not positive definite");
-  expect_bad(kVertices + "EDGE_SE2 0 1 1 0 0 1 2 0 1 0 1\n", "g.g2o:3:", "not positive definite");
+  expect_bad_g2o(kVertices + "EDGE_SE2 0 1 1 0 0 1 0 0 1 0 0\n",
+                 "g.g2o:3:", "EDGE_SE2 0 1: information matrix is not positive definite");
+  expect_bad_g2o(kVertices + "EDGE_SE2 0 1 1 0 0 1 2 0 1 0 1\n",
+                 "g.g2o:3:", "not positive definite");
 }
 
 TEST(G2oFile, FileWithoutVerticesOrEdgesIsRejected) {
-  expect_bad("# nothing\nFIX 0\n", "g.g2o: ", "no VERTEX_SE2 or EDGE_SE2 lines");
+  expect_bad_g2o("# nothing\nFIX 0\n", "g.g2o: ", "no VERTEX_SE2 or EDGE_SE2 lines");
 }
 
 TEST(G2oFile, MissingFileIsAnInputError) {

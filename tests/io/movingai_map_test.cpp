@@ -99,14 +99,14 @@ TEST(ReadMovingAiMap, MissingFileSaysSo) {
   EXPECT_THAT(g.error().message, HasSubstr("none.map: no such file"));
 }
 
-struct RealMap {
+struct MovingAiMap {
   const char* name;
   int width, height;
   std::size_t passable;
 };
 
 // Passable ('.', 'G', 'S') counts made independently with Python.
-const RealMap kRealMaps[] = {
+const MovingAiMap kMovingAiMaps[] = {
     {"8room_000.map", 512, 512, 206642}, {"arena.map", 49, 49, 2054},
     {"den312d.map", 65, 81, 2445},       {"maze-128-128-2.map", 128, 128, 10858},
     {"maze-32-32-2.map", 32, 32, 666},   {"room-32-32-4.map", 32, 32, 682},
@@ -114,7 +114,7 @@ const RealMap kRealMaps[] = {
 };
 
 TEST(ReadMovingAiMap, ReadsEveryRealBenchmarkMap) {
-  for (const RealMap& m : kRealMaps) {
+  for (const MovingAiMap& m : kMovingAiMaps) {
     const auto path = support::data_path(std::string("maps/movingai/") + m.name);
     TESSERA_REQUIRE_DATA(path);
     Result<OccupancyGrid> g = read_movingai_map(path);

@@ -16,7 +16,7 @@ using io_test::TempDir;
 using ::testing::HasSubstr;
 using ::testing::StartsWith;
 
-Result<std::vector<Relation>> read_text(const TempDir& dir, const std::string& text) {
+Result<std::vector<Relation>> read_relations_text(const TempDir& dir, const std::string& text) {
   io_test::write_bytes(dir / "r.relations", text);
   return read_relations(dir / "r.relations");
 }
@@ -24,9 +24,9 @@ Result<std::vector<Relation>> read_text(const TempDir& dir, const std::string& t
 TEST(RelationsFile, KeepsXYAndYawOfEachLineInFileOrder) {
   TempDir dir;
   const Result<std::vector<Relation>> r =
-      read_text(dir,
-                "# t1 t2 x y z roll pitch yaw\n\n10.5 12.25 0.5 -0.25 0 0 0 1.5\r\n"
-                "3\t1   1 2 0.000000 0.000000 0.000000 4\n");
+      read_relations_text(dir,
+                          "# t1 t2 x y z roll pitch yaw\n\n10.5 12.25 0.5 -0.25 0 0 0 1.5\r\n"
+                          "3\t1   1 2 0.000000 0.000000 0.000000 4\n");
   ASSERT_TRUE(r.ok()) << r.error().message;
   ASSERT_EQ(r->size(), 2u);
   EXPECT_DOUBLE_EQ((*r)[0].t1_s, 10.5);
@@ -38,9 +38,10 @@ TEST(RelationsFile, KeepsXYAndYawOfEachLineInFileOrder) {
   EXPECT_NEAR((*r)[1].motion.theta, 4.0 - 2.0 * std::numbers::pi, 1e-12) << "wrapped";
 }
 
-void expect_bad(const std::string& text, const std::string& where, const std::string& phrase) {
+void expect_bad_relations(const std::string& text, const std::string& where,
+                          const std::string& phrase) {
   TempDir dir;
-  const Result<std::vector<Relation>> r = read_text(dir, text);
+  const Result<std::vector<Relation>> r = read_relations_text(dir, text);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().kind, ErrorKind::kInput);
   EXPECT_THAT(r.error().message, StartsWith((dir / where).string()));
@@ -48,25 +49,25 @@ void expect_bad(const std::string& text, const std::string& where, const std::st
 }
 
 TEST(RelationsFile, LineWithSevenFieldsNamesFileAndLine) {
-  expect_bad("1 2 0 0 0 0 0 0\n1 2 0 0 0 0 0\n",
-             "r.relations:2:", "expected 8 fields 't1 t2 x y z roll pitch yaw', got 7");
+  expect_bad_relations("1 2 0 0 0 0 0 0\n1 2 0 0 0 0 0\n",
+                       "r.relations:2:", "expected 8 fields 't1 t2 x y z roll pitch yaw', got 7");
 }
 
 TEST(RelationsFile, LineWithNineFieldsIsRejected) {
-  expect_bad("1 2 0 0 0 0 0 0 9\n", "r.relations:1:", "got 9");
+  expect_bad_relations("1 2 0 0 0 0 0 0 9\n", "r.relations:1:", "got 9");
 }
 
 TEST(RelationsFile, NonNumericFieldIsNamed) {
-  expect_bad("1 2 0 0 0 0 0 0\n\n1 2 0.5 y 0 0 0 0\n",
-             "r.relations:3:", "y is 'y', expected a finite number");
+  expect_bad_relations("1 2 0 0 0 0 0 0\n\n1 2 0.5 y 0 0 0 0\n",
+                       "r.relations:3:", "y is 'y', expected a finite number");
 }
 
 TEST(RelationsFile, NanStampIsRejected) {
-  expect_bad("nan 2 0 0 0 0 0 0\n", "r.relations:1:", "t1 is 'nan'");
+  expect_bad_relations("nan 2 0 0 0 0 0 0\n", "r.relations:1:", "t1 is 'nan'");
 }
 
 TEST(RelationsFile, FileWithoutRelationsIsRejected) {
-  expect_bad("# only a comment\n", "r.relations: ", "no relations");
+  expect_bad_relations("# only a comment\n", "r.relations: ", "no relations");
 }
 
 TEST(RelationsFile, MissingFileIsAnInputError) {

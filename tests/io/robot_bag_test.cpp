@@ -18,8 +18,6 @@ namespace {
 using support::TempDir;
 using ::testing::HasSubstr;
 
-constexpr double kPi = std::numbers::pi;
-
 Result<RobotBag> convert(const support::SyntheticRun& run, RobotBagOptions options = {}) {
   TempDir dir;
   support::write_bytes(dir / "run.bag", support::write_ros1_bag(run.topics, run.messages, "lz4"));
@@ -34,7 +32,7 @@ TEST(RobotBag, LaserPoseComesFromTheStaticTfChain) {
   for (const StampedScan& s : r->log.scans) {
     EXPECT_NEAR(s.laser_in_robot.x, support::kSyntheticLaserX, 1e-12);
     EXPECT_NEAR(s.laser_in_robot.y, 0.0, 1e-12);
-    EXPECT_NEAR(std::abs(s.laser_in_robot.theta), kPi, 1e-12);
+    EXPECT_NEAR(std::abs(s.laser_in_robot.theta), std::numbers::pi, 1e-12);
   }
 }
 
@@ -62,7 +60,7 @@ TEST(RobotBag, OutOfRangeReadingsBecomeNoReturns) {
   EXPECT_EQ(scan.ranges_m[0], 5.0);  // inf
   EXPECT_NEAR(scan.ranges_m[1], support::synthetic_range(1, 1), 1e-6);
   EXPECT_EQ(r->no_return_readings, 2 * 4);
-  EXPECT_NEAR(scan.angle_min_rad, -kPi, 1e-6);
+  EXPECT_NEAR(scan.angle_min_rad, -std::numbers::pi, 1e-6);
 }
 
 TEST(RobotBag, DriverNoReadingConventionsAllBecomeNoReturns) {
@@ -166,7 +164,7 @@ TEST(TfTree, DynamicEdgesInterpolateAndStaticOnesWinOverOlderStatics) {
   ASSERT_TRUE(T.ok()) << T.error().message;
   const Pose2 p = planar_pose(*T);
   EXPECT_NEAR(p.x, 1.0, 1e-12);  // 0.5 (interpolated) + 0.5
-  EXPECT_NEAR(std::abs(p.theta), kPi, 1e-12);
+  EXPECT_NEAR(std::abs(p.theta), std::numbers::pi, 1e-12);
   // And the other way round: T_laser_odom is the inverse.
   const Pose2 q = planar_pose(*tf.lookup("laser", "odom", 5));
   EXPECT_NEAR(q.x, 1.0, 1e-12);
@@ -216,7 +214,7 @@ void expect_neato_bag(const std::filesystem::path& path, std::size_t scans, std:
     EXPECT_NEAR(std::abs(normalize_angle(s.laser_in_robot.theta - expected.theta)), 0.0, 1e-9);
     if (s.scan.ranges_m.size() == 361u) {
       ++full_scans;
-      EXPECT_NEAR(s.scan.angle_increment_rad, kPi / 180.0, 1e-6);  // 1 degree
+      EXPECT_NEAR(s.scan.angle_increment_rad, std::numbers::pi / 180.0, 1e-6);  // 1 degree
     }
     EXPECT_NEAR(s.scan.max_range_m, 5.0, 1e-6);
     EXPECT_NEAR(s.scan.min_range_m, 0.02, 1e-6);

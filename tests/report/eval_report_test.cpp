@@ -7,18 +7,13 @@
 #include <set>
 #include <string>
 
+#include "support/json_fields.hpp"
+
 namespace tessera {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
-std::set<std::string> keys(const nlohmann::json& j) {
-  std::set<std::string> k;
-  for (const auto& [key, value] : j.items()) k.insert(key);
-  return k;
-}
-
-double num(const nlohmann::json& j) { return j.get<double>(); }
+using support::keys;
+using support::num;
 
 RelationMetric small_metric() {
   RelationMetric m;
@@ -28,10 +23,10 @@ RelationMetric small_metric() {
   m.trans_std_m = 0.25;
   m.trans_sq_mean_m2 = 0.3;
   m.trans_sq_std_m2 = 0.1;
-  m.rot_mean_rad = kPi / 90.0;                     // 2 deg
-  m.rot_std_rad = kPi / 180.0;                     // 1 deg
-  m.rot_sq_mean_rad2 = 4.0 * (kPi / 180.0) * (kPi / 180.0);  // 4 deg^2
-  m.rot_sq_std_rad2 = 9.0 * (kPi / 180.0) * (kPi / 180.0);   // 9 deg^2
+  m.rot_mean_rad = std::numbers::pi / 90.0;                                            // 2 deg
+  m.rot_std_rad = std::numbers::pi / 180.0;                                            // 1 deg
+  m.rot_sq_mean_rad2 = 4.0 * (std::numbers::pi / 180.0) * (std::numbers::pi / 180.0);  // 4 deg^2
+  m.rot_sq_std_rad2 = 9.0 * (std::numbers::pi / 180.0) * (std::numbers::pi / 180.0);   // 9 deg^2
   m.poses = 40;
   m.trajectory_begin_s = 100.0;
   m.trajectory_end_s = 130.0;
@@ -81,7 +76,7 @@ AbsoluteTrajectoryError small_ate() {
   ate.trans_m = {10, 0.05, 0.04, 0.035, 0.02, 0.01, 0.09};
   // A quarter turn about z and a shift of (1, 2, 3).
   ate.T_reference_estimate = Eigen::Translation3d(1.0, 2.0, 3.0) *
-                             Eigen::AngleAxisd(kPi / 2.0, Eigen::Vector3d::UnitZ());
+                             Eigen::AngleAxisd(std::numbers::pi / 2.0, Eigen::Vector3d::UnitZ());
   return ate;
 }
 
@@ -89,7 +84,7 @@ TEST(TrajectoryReport, AteRpeAndTheAlignment) {
   RelativePoseError rpe;
   rpe.delta_s = 2.0;
   rpe.trans_m = {8, 0.4, 0.3, 0.3, 0.1, 0.1, 0.6};
-  rpe.rot_rad = {8, kPi / 90.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // rmse 2 deg
+  rpe.rot_rad = {8, std::numbers::pi / 90.0, 0.0, 0.0, 0.0, 0.0, 0.0};  // rmse 2 deg
   const nlohmann::json j =
       trajectory_report(small_ate(), rpe, 2.0, {"eval ate", {}, 0.5, 20.0});
   EXPECT_EQ(j["command"], "eval ate");

@@ -7,16 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "support/json_fields.hpp"
+
 namespace tessera {
 namespace {
 
-std::set<std::string> keys(const nlohmann::json& j) {
-  std::set<std::string> k;
-  for (const auto& [key, value] : j.items()) k.insert(key);
-  return k;
-}
-
-double num(const nlohmann::json& j) { return j.get<double>(); }
+using support::keys;
+using support::num;
 
 // A 4 x 3 world of 0.25 m cells.
 World small_world() {

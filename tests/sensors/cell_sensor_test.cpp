@@ -6,27 +6,27 @@
 #include <ostream>
 #include <vector>
 
-namespace tessera {
+#include "support/cell_print.hpp"
 
-// Readable gmock output for cells.
-inline void PrintTo(const Cell& c, std::ostream* os) { *os << "(" << c.x << ", " << c.y << ")"; }
+namespace tessera {
 
 namespace {
 
 using ::testing::UnorderedElementsAre;
 
-const GridGeometry kGeometry({0.0, 0.0}, 1.0, 5, 5);
+const GridGeometry kCellGeometry({0.0, 0.0}, 1.0, 5, 5);
 
 CellReading reading_at(Cell center, std::vector<int> occupied_k) {
   CellReading r;
   r.center = center;
-  for (std::size_t k = 0; k < 8; ++k) r.inside_map[k] = kGeometry.contains(center + kNeighbors8[k]);
+  for (std::size_t k = 0; k < 8; ++k)
+    r.inside_map[k] = kCellGeometry.contains(center + kNeighbors8[k]);
   for (const int k : occupied_k) r.occupied[static_cast<std::size_t>(k)] = true;
   return r;
 }
 
 TEST(InsertCellReading, CentreAndOpenNeighboursGetPFreeAndObstaclesPOccupied) {
-  OccupancyGrid map(kGeometry);
+  OccupancyGrid map(kCellGeometry);
   // North (k = 0) and South-West (k = 5) hold obstacles.
   insert_cell_reading(map, reading_at({2, 2}, {0, 5}), {}, nullptr);
   EXPECT_EQ(map.known_count(), 9u);
@@ -38,7 +38,7 @@ TEST(InsertCellReading, CentreAndOpenNeighboursGetPFreeAndObstaclesPOccupied) {
 }
 
 TEST(InsertCellReading, NeighboursBeyondTheMapEdgeAreNotWritten) {
-  OccupancyGrid map(kGeometry);
+  OccupancyGrid map(kCellGeometry);
   std::vector<Cell> touched;
   insert_cell_reading(map, reading_at({0, 0}, {}), {}, &touched);
   EXPECT_THAT(touched, UnorderedElementsAre(Cell{0, 0}, Cell{0, 1}, Cell{1, 1}, Cell{1, 0}));
@@ -46,7 +46,7 @@ TEST(InsertCellReading, NeighboursBeyondTheMapEdgeAreNotWritten) {
 }
 
 TEST(InsertCellReading, NeighbourMarkedOutsideTheMapIsSkippedEvenIfTheGridHasIt) {
-  OccupancyGrid map(kGeometry);
+  OccupancyGrid map(kCellGeometry);
   CellReading r = reading_at({2, 2}, {2});
   r.inside_map[2] = false;  // East not reported
   insert_cell_reading(map, r, {}, nullptr);
@@ -55,7 +55,7 @@ TEST(InsertCellReading, NeighbourMarkedOutsideTheMapIsSkippedEvenIfTheGridHasIt)
 }
 
 TEST(InsertCellReading, TouchedListsOnlyCellsThatChangedOrBecameKnown) {
-  OccupancyGrid map(kGeometry);
+  OccupancyGrid map(kCellGeometry);
   std::vector<Cell> touched;
   insert_cell_reading(map, reading_at({2, 2}, {0}), {}, &touched);
   EXPECT_EQ(touched.size(), 9u);
@@ -70,7 +70,7 @@ TEST(InsertCellReading, TouchedListsOnlyCellsThatChangedOrBecameKnown) {
 }
 
 TEST(InsertCellReading, UsesTheConfiguredProbabilities) {
-  OccupancyGrid map(kGeometry);
+  OccupancyGrid map(kCellGeometry);
   CellSensorOptions options;
   options.p_free = 0.2;
   options.p_occupied = 0.8;

@@ -10,14 +10,11 @@
 #include <ostream>
 #include <vector>
 
+#include "support/cell_print.hpp"
+
 namespace tessera {
 
-// Readable gmock output for cells.
-inline void PrintTo(const Cell& c, std::ostream* os) { *os << "(" << c.x << ", " << c.y << ")"; }
-
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 TEST(LidarOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
   EXPECT_FALSE(validate(LidarOptions{}).has_value());
@@ -41,8 +38,8 @@ TEST(LidarOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
 TEST(EmptyScan, FullCircleSpacesBeamsWithoutRepeatingTheFirst) {
   const RangeScan scan = empty_scan(LidarOptions{});
   ASSERT_EQ(scan.ranges_m.size(), 360u);
-  EXPECT_DOUBLE_EQ(scan.angle_min_rad, -kPi);
-  EXPECT_DOUBLE_EQ(scan.angle_increment_rad, 2.0 * kPi / 360.0);
+  EXPECT_DOUBLE_EQ(scan.angle_min_rad, -std::numbers::pi);
+  EXPECT_DOUBLE_EQ(scan.angle_increment_rad, 2.0 * std::numbers::pi / 360.0);
   EXPECT_DOUBLE_EQ(scan.angle_min_rad + 180 * scan.angle_increment_rad, 0.0);
   EXPECT_EQ(scan.max_range_m, 8.0);
   EXPECT_TRUE(
@@ -52,11 +49,11 @@ TEST(EmptyScan, FullCircleSpacesBeamsWithoutRepeatingTheFirst) {
 TEST(EmptyScan, PartialFieldOfViewPutsBeamsOnBothEdges) {
   LidarOptions o;
   o.beams = 181;
-  o.fov_rad = kPi;
+  o.fov_rad = std::numbers::pi;
   o.min_range_m = 0.1;
   const RangeScan scan = empty_scan(o);
-  EXPECT_DOUBLE_EQ(scan.angle_min_rad, -0.5 * kPi);
-  EXPECT_DOUBLE_EQ(scan.angle_min_rad + 180 * scan.angle_increment_rad, 0.5 * kPi);
+  EXPECT_DOUBLE_EQ(scan.angle_min_rad, -0.5 * std::numbers::pi);
+  EXPECT_DOUBLE_EQ(scan.angle_min_rad + 180 * scan.angle_increment_rad, 0.5 * std::numbers::pi);
   EXPECT_EQ(scan.min_range_m, 0.1);
   o.beams = 1;
   EXPECT_EQ(empty_scan(o).angle_min_rad, 0.0);
@@ -96,12 +93,12 @@ TEST(InsertScan, ReturnExactlyOnACellBorderLandsInTheWallCellWhateverTheDirectio
   // Facing -x from (4.25, 1.75): a wall cell (1, 3) spans x in [0.5, 1); its face is at x = 1.0,
   // range 3.25. The return point is exactly on the border of cells 1 and 2.
   OccupancyGrid map(kGeometry);
-  insert_scan(map, {4.25, 1.75, -kPi}, one_beam(3.25), {}, nullptr);
+  insert_scan(map, {4.25, 1.75, -std::numbers::pi}, one_beam(3.25), {}, nullptr);
   EXPECT_EQ(map.state({1, 3}), CellState::kOccupied);
   EXPECT_EQ(map.state({2, 3}), CellState::kFree);
   // Facing +y from (1.25, 0.25): wall row 4 starts at y = 2.0, range 1.75.
   OccupancyGrid up(kGeometry);
-  insert_scan(up, {1.25, 0.25, 0.5 * kPi}, one_beam(1.75), {}, nullptr);
+  insert_scan(up, {1.25, 0.25, 0.5 * std::numbers::pi}, one_beam(1.75), {}, nullptr);
   EXPECT_EQ(up.state({2, 4}), CellState::kOccupied);
   EXPECT_EQ(up.state({2, 3}), CellState::kFree);
 }
@@ -111,7 +108,7 @@ TEST(InsertScan, ABeamThroughAnExactCornerClearsNeitherCellItOnlyTouches) {
   // diagonal cells. The cells beside each corner, e.g. (1, 0) and (0, 1), are touched at one point:
   // one of them may be a wall the beam squeezed past, so neither may get a miss.
   OccupancyGrid map(kGeometry);
-  insert_scan(map, {0.25, 0.25, 0.25 * kPi}, one_beam(2.5), {}, nullptr);
+  insert_scan(map, {0.25, 0.25, 0.25 * std::numbers::pi}, one_beam(2.5), {}, nullptr);
   for (int i = 0; i < 4; ++i) {
     EXPECT_EQ(map.state({i, i}), CellState::kFree) << i;
     EXPECT_EQ(map.state({i + 1, i}), CellState::kUnknown) << i;

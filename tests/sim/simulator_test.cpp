@@ -15,8 +15,6 @@ namespace {
 
 using support::from_ascii;
 
-constexpr double kPi = std::numbers::pi;
-
 // 7 x 5 cells of 1 m; the free cells (1..5, 1..3) with a block at (3, 2).
 World small_room() {
   // clang-format off
@@ -107,13 +105,13 @@ TEST(Simulator, CellRobotTeleportsToTheNeighbourCentreFacingTheMove) {
   EXPECT_TRUE(out.moved);
   EXPECT_TRUE(out.reason.empty());
   EXPECT_EQ(out.distance_m, 1.0);
-  EXPECT_DOUBLE_EQ(out.turn_rad, 0.5 * kPi);
+  EXPECT_DOUBLE_EQ(out.turn_rad, 0.5 * std::numbers::pi);
   EXPECT_EQ(sim.cell(0), (Cell{1, 2}));
   EXPECT_EQ(sim.pose(0).x, 1.5);
   EXPECT_EQ(sim.pose(0).y, 2.5);
-  EXPECT_DOUBLE_EQ(sim.pose(0).theta, 0.5 * kPi);
+  EXPECT_DOUBLE_EQ(sim.pose(0).theta, 0.5 * std::numbers::pi);
   out = sim.move_to_adjacent(0, {2, 2});  // East: a right turn
-  EXPECT_DOUBLE_EQ(out.turn_rad, -0.5 * kPi);
+  EXPECT_DOUBLE_EQ(out.turn_rad, -0.5 * std::numbers::pi);
   EXPECT_EQ(sim.pose(0).theta, 0.0);
 }
 
@@ -122,11 +120,11 @@ TEST(Simulator, LidarRobotTurnsInPlaceThenDrivesOneCell) {
   ASSERT_TRUE(sim.add_robot({2, 1}, lidar_spec()).ok());
   MoveOutcome out = sim.move_to_adjacent(0, {1, 1});  // West: half a turn
   EXPECT_TRUE(out.moved);
-  EXPECT_DOUBLE_EQ(std::fabs(out.turn_rad), kPi);
+  EXPECT_DOUBLE_EQ(std::fabs(out.turn_rad), std::numbers::pi);
   EXPECT_EQ(out.distance_m, 1.0);
-  EXPECT_EQ(sim.pose(0).theta, -kPi);     // headings stay in [-pi, pi)
+  EXPECT_EQ(sim.pose(0).theta, -std::numbers::pi);  // headings stay in [-pi, pi)
   out = sim.move_to_adjacent(0, {1, 2});  // North from West: a right turn
-  EXPECT_DOUBLE_EQ(out.turn_rad, -0.5 * kPi);
+  EXPECT_DOUBLE_EQ(out.turn_rad, -0.5 * std::numbers::pi);
   out = sim.move_to_adjacent(0, {1, 3});  // straight on
   EXPECT_EQ(out.turn_rad, 0.0);
   EXPECT_EQ(sim.cell(0), (Cell{1, 3}));

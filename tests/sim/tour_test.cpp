@@ -16,7 +16,6 @@
 namespace tessera {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using support::from_ascii;
 using ::testing::HasSubstr;
 
@@ -31,7 +30,7 @@ World random_world(int w, int h, double resolution_m, double p_solid, Rng& rng) 
 TEST(RoutePiece, PosesAlongALineAnArcAndATurn) {
   RoutePiece line;
   line.kind = RoutePiece::Kind::kLine;
-  line.start = {1.0, 2.0, 0.5 * kPi};
+  line.start = {1.0, 2.0, 0.5 * std::numbers::pi};
   line.length_m = 3.0;
   EXPECT_NEAR(line.end().x, 1.0, 1e-12);
   EXPECT_NEAR(line.end().y, 5.0, 1e-12);
@@ -41,11 +40,11 @@ TEST(RoutePiece, PosesAlongALineAnArcAndATurn) {
   arc.kind = RoutePiece::Kind::kArc;
   arc.start = {0.0, 0.0, 0.0};
   arc.curvature_1_per_m = -0.5;
-  arc.length_m = kPi;
+  arc.length_m = std::numbers::pi;
   EXPECT_NEAR(arc.end().x, 2.0, 1e-12);
   EXPECT_NEAR(arc.end().y, -2.0, 1e-12);
-  EXPECT_NEAR(arc.end().theta, -0.5 * kPi, 1e-12);
-  EXPECT_DOUBLE_EQ(arc.extent(), kPi);
+  EXPECT_NEAR(arc.end().theta, -0.5 * std::numbers::pi, 1e-12);
+  EXPECT_DOUBLE_EQ(arc.extent(), std::numbers::pi);
 
   RoutePiece turn;
   turn.kind = RoutePiece::Kind::kTurn;
@@ -117,8 +116,8 @@ TEST(RandomStartPose, PicksTheLargestComponentAndReportsNoRoom) {
     const Result<Pose2> start = random_start_pose(world, 0.0, rng);
     ASSERT_TRUE(start.ok()) << start.error().message;
     EXPECT_GT(start->x, 0.7);
-    EXPECT_GE(start->theta, -kPi);
-    EXPECT_LT(start->theta, kPi);
+    EXPECT_GE(start->theta, -std::numbers::pi);
+    EXPECT_LT(start->theta, std::numbers::pi);
   }
   Rng rng(1);
   const Result<Pose2> none = random_start_pose(world, 0.2, rng);

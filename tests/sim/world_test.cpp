@@ -15,8 +15,6 @@ namespace {
 
 using support::from_ascii;
 
-constexpr double kPi = std::numbers::pi;
-
 // A 10 x 8 room of 0.5 m cells with one-cell walls and a 2 x 1 pillar at cells (6..7, 4).
 // clang-format off
 const World kRoom = from_ascii({"##########",
@@ -61,15 +59,18 @@ TEST(World, CastRayIsExactInAHandMadeRoom) {
   // From the centre of cell (2, 3) = (1.25, 1.75).
   const Vec2 from{1.25, 1.75};
   EXPECT_DOUBLE_EQ(kRoom.cast_ray(from, 0.0, 10.0), 3.25);           // east wall face at x = 4.5
-  EXPECT_DOUBLE_EQ(kRoom.cast_ray(from, 0.5 * kPi, 10.0), 1.75);     // north wall face at y = 3.5
-  EXPECT_NEAR(kRoom.cast_ray(from, kPi, 10.0), 0.75, 1e-12);         // west wall face at x = 0.5
-  EXPECT_NEAR(kRoom.cast_ray(from, -0.5 * kPi, 10.0), 1.25, 1e-12);  // south face at y = 0.5
+  EXPECT_DOUBLE_EQ(kRoom.cast_ray(from, 0.5 * std::numbers::pi, 10.0),
+                   1.75);  // north wall face at y = 3.5
+  EXPECT_NEAR(kRoom.cast_ray(from, std::numbers::pi, 10.0), 0.75,
+              1e-12);  // west wall face at x = 0.5
+  EXPECT_NEAR(kRoom.cast_ray(from, -0.5 * std::numbers::pi, 10.0), 1.25,
+              1e-12);  // south face at y = 0.5
   // 45 degrees: reaches y = 3.5 at x = 3.0 (cell (6, 7) of the north wall) after 1.75 * sqrt(2).
-  EXPECT_NEAR(kRoom.cast_ray(from, 0.25 * kPi, 10.0), 1.75 * std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(kRoom.cast_ray(from, 0.25 * std::numbers::pi, 10.0), 1.75 * std::sqrt(2.0), 1e-12);
   // The pillar (6..7, 4) = [3.0, 4.0] x [2.0, 2.5]: from (2.0, 2.25) east it is 1.0 away.
   EXPECT_DOUBLE_EQ(kRoom.cast_ray({2.0, 2.25}, 0.0, 10.0), 1.0);
   // From (3.5, 0.75) north to the pillar's underside at y = 2.0.
-  EXPECT_NEAR(kRoom.cast_ray({3.5, 0.75}, 0.5 * kPi, 10.0), 1.25, 1e-12);
+  EXPECT_NEAR(kRoom.cast_ray({3.5, 0.75}, 0.5 * std::numbers::pi, 10.0), 1.25, 1e-12);
 }
 
 TEST(World, CastRayReturnsMaxRangeWhenNothingIsHitAndZeroInsideASolidCell) {
@@ -87,7 +88,7 @@ TEST(World, CastRayStopsAtTheGridEdgeOfAnOpenWorld) {
                                 1.0, {-2.0, 1.0});
   // clang-format on
   EXPECT_DOUBLE_EQ(open.cast_ray({-1.5, 1.5}, 0.0, 100.0), 3.5);
-  EXPECT_DOUBLE_EQ(open.cast_ray({-1.5, 1.5}, 0.5 * kPi, 100.0), 2.5);
+  EXPECT_DOUBLE_EQ(open.cast_ray({-1.5, 1.5}, 0.5 * std::numbers::pi, 100.0), 2.5);
 }
 
 TEST(World, CastRayAgreesWithSamplingAlongTheRayInRandomWorlds) {
@@ -103,7 +104,7 @@ TEST(World, CastRayAgreesWithSamplingAlongTheRayInRandomWorlds) {
     do {
       from = {rng.uniform(-1.0, 6.5), rng.uniform(0.5, 5.5)};
     } while (world.solid(g.cell_at_unchecked(from)));
-    const double angle = rng.uniform(-kPi, kPi);
+    const double angle = rng.uniform(-std::numbers::pi, std::numbers::pi);
     const double max_range = rng.uniform(0.1, 8.0);
     const double d = world.cast_ray(from, angle, max_range);
     const Vec2 dir{std::cos(angle), std::sin(angle)};

@@ -24,8 +24,7 @@ using ::testing::ElementsAre;
 using ::testing::ElementsAreArray;
 using ::testing::HasSubstr;
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+constexpr double kDeg = std::numbers::pi / 180.0;
 
 // ---- Helpers ----------------------------------------------------------------------------------
 
@@ -191,7 +190,7 @@ GridGeometry lecture_window() { return robot_window(kCellM, 2, 5, 2); }
 /// up, everything within its 5-cell range written in.
 OccupancyGrid lecture_current_map(const World& room) {
   OccupancyGrid map(room.geometry());
-  const Pose2 before = at_cell(3, 3, 0.5 * kPi);
+  const Pose2 before = at_cell(3, 3, 0.5 * std::numbers::pi);
   (void)update_map(map,
                    perception_from_scan(ideal_scan(room, before, lecture_lidar()),
                                         robot_window(kCellM, kRangeM)),
@@ -216,7 +215,7 @@ TEST(LectureExample, CurrentMapIsWhatTheRobotSawBeforeTheMove) {
 
 TEST(LectureExample, ActualPerceptionShowsTheWallsTurnedBy15Degrees) {
   const World room = lecture_room();
-  const Pose2 actual = at_cell(3, 4, 0.5 * kPi - 15.0 * kDeg);
+  const Pose2 actual = at_cell(3, 4, 0.5 * std::numbers::pi - 15.0 * kDeg);
   const TernaryGrid p =
       perception_from_scan(ideal_scan(room, actual, lecture_lidar()), lecture_window());
   // Drawn as the lecture draws it: the robot is in the middle of the sixth row, moving up. The
@@ -236,8 +235,9 @@ TEST(LectureExample, ActualPerceptionShowsTheWallsTurnedBy15Degrees) {
 TEST(LectureExample, CorrectPositionWith15DegreesClockwiseWins) {
   const World room = lecture_room();
   const OccupancyGrid map = lecture_current_map(room);
-  const Pose2 odometry = at_cell(3, 4, 0.5 * kPi);  // "intended": one cell up, heading kept
-  const Pose2 actual = at_cell(3, 4, 0.5 * kPi - 15.0 * kDeg);
+  const Pose2 odometry =
+      at_cell(3, 4, 0.5 * std::numbers::pi);  // "intended": one cell up, heading kept
+  const Pose2 actual = at_cell(3, 4, 0.5 * std::numbers::pi - 15.0 * kDeg);
   const TernaryGrid p =
       perception_from_scan(ideal_scan(room, actual, lecture_lidar()), lecture_window());
 
@@ -283,10 +283,10 @@ TEST(LectureExample, CorrectPositionWith15DegreesClockwiseWins) {
 TEST(LectureExample, UpdateAtTheWinningPoseAddsTheNewlySeenArea) {
   const World room = lecture_room();
   OccupancyGrid map = lecture_current_map(room);
-  const Pose2 actual = at_cell(3, 4, 0.5 * kPi - 15.0 * kDeg);
+  const Pose2 actual = at_cell(3, 4, 0.5 * std::numbers::pi - 15.0 * kDeg);
   const RangeScan scan = ideal_scan(room, actual, lecture_lidar());
-  const GridMatchResult r =
-      match(map, perception_from_scan(scan, lecture_window()), at_cell(3, 4, 0.5 * kPi));
+  const GridMatchResult r = match(map, perception_from_scan(scan, lecture_window()),
+                                  at_cell(3, 4, 0.5 * std::numbers::pi));
   ASSERT_EQ(r.winner().offset, (CandidateOffset{0, 0, -1}));
   // "More complicated in practice": the update writes everything within the sensor's five-cell
   // radius at the winning pose, so cells the map did not know are added, and cells beyond the
@@ -505,7 +505,7 @@ TEST(UpdateMap, WritesKnownPerceptionCellsAndLeavesTheRestAlone) {
   }
   p.set({2, 2}, kTernaryOccupied);  // ahead (+x) and left (+y)
   p.set({0, 0}, kTernaryUnknown);   // behind and right
-  const MapUpdateStats stats = update_map(map, p, {2.5, 1.5, 0.5 * kPi});
+  const MapUpdateStats stats = update_map(map, p, {2.5, 1.5, 0.5 * std::numbers::pi});
   EXPECT_THAT(rows_of(map), ElementsAre("??????",  //
                                         "?#..??",  //
                                         "#.....",  //

@@ -13,8 +13,6 @@
 namespace tessera::slam {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// A ternary grid as text, top row first: '.' -1, '#' +1, '?' 0.
 std::vector<std::string> to_rows(const TernaryGrid& g) {
   std::vector<std::string> rows;
@@ -161,7 +159,7 @@ TEST(PerceptionFromScan, InvalidReadingsAndBearingsOutsideTheFieldOfViewStayUnkn
   // beam (straight ahead) is invalid.
   LidarOptions o;
   o.beams = 91;
-  o.fov_rad = 0.5 * kPi;
+  o.fov_rad = 0.5 * std::numbers::pi;
   o.min_range_m = 0.1;
   o.max_range_m = 3.0;
   RangeScan scan = empty_scan(o);
@@ -187,10 +185,10 @@ TEST(ExpectedMap, ReadsTheMapCellUnderEachWindowCentre) {
   // Robot at the centre of cell (3, 2) heading +y: ahead is up and its right is +x. Window row y
   // is map column 3 - (y - 1), so the obstacle column 4 is window row 0 (on the right); window
   // column x is map row 2 + (x - 1), rows 1..4, all known.
-  EXPECT_THAT(to_rows(expected_map(map, window, {3.5, 2.5, 0.5 * kPi})),
+  EXPECT_THAT(to_rows(expected_map(map, window, {3.5, 2.5, 0.5 * std::numbers::pi})),
               ::testing::ElementsAre("....", "....", "####"));
   // Near the map's edge: window cells beyond it are 0.
-  EXPECT_THAT(to_rows(expected_map(map, window, {0.5, 3.5, 0.5 * kPi})),
+  EXPECT_THAT(to_rows(expected_map(map, window, {0.5, 3.5, 0.5 * std::numbers::pi})),
               ::testing::ElementsAre("????", "...?", "...?"));
 }
 
@@ -201,7 +199,7 @@ TEST(ExpectedMap, RotationIsAboutTheRobotNotTheWindowCorner) {
   map.set_probability({5, 1}, 0.9);
   const GridGeometry window = robot_window(1.0, 2, 2, 1);
   const TernaryGrid ahead = expected_map(map, window, {3.5, 1.5, 0.0});
-  const TernaryGrid behind = expected_map(map, window, {3.5, 1.5, -kPi});
+  const TernaryGrid behind = expected_map(map, window, {3.5, 1.5, -std::numbers::pi});
   EXPECT_EQ(ahead.at({4, 1}), kTernaryOccupied);
   EXPECT_EQ(ahead.known_count(), 1u);
   EXPECT_EQ(behind.at({0, 1}), kTernaryOccupied);

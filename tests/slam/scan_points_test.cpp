@@ -10,12 +10,10 @@
 namespace tessera::slam {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 RangeScan four_beams(std::vector<double> ranges) {
   RangeScan scan;
   scan.angle_min_rad = 0.0;
-  scan.angle_increment_rad = kPi / 2.0;
+  scan.angle_increment_rad = std::numbers::pi / 2.0;
   scan.min_range_m = 0.05;
   scan.max_range_m = 10.0;
   scan.ranges_m = std::move(ranges);
@@ -26,7 +24,8 @@ RangeScan four_beams(std::vector<double> ranges) {
 TEST(ScanToPoints, ReturnsLandInTheRobotFrameThroughTheMounting) {
   ScanPointsOptions o;
   o.missing_ray_length_m = 0.0;
-  const ScanPoints p = scan_to_points(four_beams({1.0, 2.0, 3.0, 4.0}), {0.5, 0.0, kPi / 2.0}, o);
+  const ScanPoints p =
+      scan_to_points(four_beams({1.0, 2.0, 3.0, 4.0}), {0.5, 0.0, std::numbers::pi / 2.0}, o);
   ASSERT_EQ(p.returns_m.size(), 4u);
   EXPECT_NEAR(p.origin_m.x, 0.5, 1e-12);
   EXPECT_NEAR(p.returns_m[0].x, 0.5, 1e-12);  // beam 0 points along the robot's y

@@ -149,8 +149,8 @@ fuzz-smoke: fuzz-build
 # inside the feature extraction and matching of the fusion front end, and the live server's asio
 # code must stay race-free if a thread ever drives it. These tests run those paths under TSan
 # (CI too); tests/tsan.supp holds the reports inside OpenCV, TBB and GDAL and says why.
-TSAN_TARGETS := live_websocket_test live_live_server_test fusion_node_matcher_test \
-  fusion_image_node_test fusion_rigid_ransac_test fusion_fusion_slam_test posegraph_pose_graph_test
+TSAN_TARGETS := live_tests fusion_tests fusion_image_tests fusion_fusion_slam_test \
+  posegraph_pose_graph_test
 .PHONY: tsan
 tsan: deps
 	cmake --preset tsan
@@ -160,5 +160,5 @@ tsan: deps
 
 # The kill test with 200 kills per command (ctest runs it with 20).
 kill-test: configure
-	cmake --build --preset dev -j $(JOBS) --target tessera apps_cli_kill_test
-	TESSERA_KILL_RUNS=200 build/dev/tests/apps/apps_cli_kill_test
+	cmake --build --preset dev -j $(JOBS) --target tessera apps_cli_tests
+	TESSERA_KILL_RUNS=200 build/dev/tests/apps/apps_cli_tests --gtest_filter='CliKill.*'

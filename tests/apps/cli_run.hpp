@@ -43,7 +43,7 @@ inline nlohmann::json read_json(const std::filesystem::path& path) {
   return nlohmann::json::parse(read_bytes(path));
 }
 
-/// The Intel raw log (the first 5,505 scans) that the session tests map.
+/// The Intel raw log (the first 5,505 scans) that the SLAM, session and live tests run on.
 inline std::filesystem::path intel_log() {
   return data_path("laser/intel/intel-raw-first5505-sot.clf");
 }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "cli_run.hpp"
 #include "live_play.hpp"
 #include "support/data.hpp"
 #include "support/dds_isolation.hpp"
@@ -23,7 +24,7 @@ LivePlay play_into_live_slam(const support::TempDir& dir, const std::string& pla
 }
 
 TEST(CliSlamRos, PlayedScansAreAllMappedByTheLiveNode) {
-  const auto log = support::data_path("laser/intel/intel-raw-first5505-sot.clf");
+  const auto log = support::intel_log();
   TESSERA_REQUIRE_DATA(log);
   const support::TempDir dir;
   const LivePlay run = play_into_live_slam(dir, log.string() + " --rate 10 --max-scans 400");
@@ -64,7 +65,7 @@ TEST(CliSlamRos, BadCombinationsAndLogsAreErrors) {
       support::run_cli("play " + (dir.path() / "bad.clf").string() + " --scan-topic /scan");
   EXPECT_EQ(topic.exit_code, 2);
   EXPECT_THAT(topic.output, HasSubstr("choose a bag's topics"));
-  const std::string intel = support::data_path("laser/intel/intel-raw-first5505-sot.clf").string();
+  const std::string intel = support::intel_log().string();
   const auto backwards = support::run_cli("play " + intel + " --from-s 50 --to-s 40");
   EXPECT_EQ(backwards.exit_code, 2);
   EXPECT_THAT(backwards.output, HasSubstr("--from-s 50 must be before --to-s 40"));
@@ -73,10 +74,10 @@ TEST(CliSlamRos, BadCombinationsAndLogsAreErrors) {
     EXPECT_EQ(empty.exit_code, 3);
     EXPECT_THAT(empty.output, HasSubstr("no scan from 5000 s"));
   }
-  const auto nobody = support::run_cli(
-      "play " + support::data_path("laser/intel/intel-raw-first5505-sot.clf").string() +
-      " --wait-s 0.2 --domain " + std::to_string(support::test_dds_domain()));
-  if (std::filesystem::exists(support::data_path("laser/intel/intel-raw-first5505-sot.clf"))) {
+  const auto nobody =
+      support::run_cli("play " + support::intel_log().string() + " --wait-s 0.2 --domain " +
+                       std::to_string(support::test_dds_domain()));
+  if (std::filesystem::exists(support::intel_log())) {
     EXPECT_EQ(nobody.exit_code, 4);
     EXPECT_THAT(nobody.output, HasSubstr("no subscriber of the scans appeared"));
   }

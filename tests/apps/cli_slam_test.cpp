@@ -22,7 +22,7 @@ using ::testing::HasSubstr;
 
 /// The first `scans` FLASER lines of the Intel raw log, as a log of their own.
 std::filesystem::path intel_slice(const TempDir& dir, int scans) {
-  std::ifstream in(support::data_path("laser/intel/intel-raw-first5505-sot.clf"));
+  std::ifstream in(support::intel_log());
   std::string text, line;
   int n = 0;
   while (n < scans && std::getline(in, line)) {
@@ -36,7 +36,7 @@ std::filesystem::path intel_slice(const TempDir& dir, int scans) {
 }
 
 TEST(CliSlam, WritesMapTrajectoryGraphAndReport) {
-  TESSERA_REQUIRE_DATA(support::data_path("laser/intel/intel-raw-first5505-sot.clf"));
+  TESSERA_REQUIRE_DATA(support::intel_log());
   TempDir dir;
   const auto log = intel_slice(dir, 150);
   const auto out = dir.path() / "out";
@@ -76,7 +76,7 @@ TEST(CliSlam, BadLogIsAnInputErrorAndWritesNothing) {
 // Relations that the log's stamps do not reach are an input error, found before anything is
 // written.
 TEST(CliSlam, RelationsOutsideTheLogAreAnInputErrorAndWriteNothing) {
-  TESSERA_REQUIRE_DATA(support::data_path("laser/intel/intel-raw-first5505-sot.clf"));
+  TESSERA_REQUIRE_DATA(support::intel_log());
   TempDir dir;
   const auto log = intel_slice(dir, 40);
   support::write_bytes(dir / "r.relations", "5000 5001 0.1 0 0 0 0 0\n");

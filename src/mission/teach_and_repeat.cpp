@@ -77,20 +77,6 @@ std::size_t replan_start_cell(const CellGraph& graph, const WavefrontField& fiel
   return best;
 }
 
-// The point of the polyline points_m (non-empty) nearest p.
-Vec2 nearest_on_polyline(Vec2 p, const std::vector<Vec2>& points_m) {
-  Vec2 best = points_m.front();
-  for (std::size_t i = 1; i < points_m.size(); ++i) {
-    const Vec2 a = points_m[i - 1];
-    const Vec2 d = points_m[i] - a;
-    const double len2 = d.dot(d);
-    const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-    const Vec2 q = a + d * t;
-    if ((q - p).norm() < (best - p).norm()) best = q;
-  }
-  return best;
-}
-
 }  // namespace
 
 std::optional<std::string> validate(const TeachAndRepeatOptions& o) {

@@ -121,4 +121,13 @@ double distance_to_polyline(Vec2 p, const std::vector<Vec2>& points_m) {
   return best;
 }
 
+Vec2 nearest_on_polyline(Vec2 p, const std::vector<Vec2>& points_m) {
+  Vec2 best = points_m.front();
+  for (std::size_t i = 1; i < points_m.size(); ++i) {
+    const Vec2 q = nearest_on_segment(p, points_m[i - 1], points_m[i]);
+    if ((q - p).norm() < (best - p).norm()) best = q;
+  }
+  return best;
+}
+
 }  // namespace tessera

@@ -56,6 +56,20 @@ TEST(CellPathPolyline, OneCellGivesStartToGoal) {
   EXPECT_THAT(line, ::testing::ElementsAre(Vec2{0.05, 0.02}, Vec2{0.01, -0.03}));
 }
 
+TEST(NearestOnPolyline, FindsTheNearestPointOfTheNearestSegmentOrItsEnds) {
+  // An L: (0, 0) -> (2, 0) -> (2, 2).
+  const std::vector<Vec2> l = {{0.0, 0.0}, {2.0, 0.0}, {2.0, 2.0}};
+  EXPECT_EQ(nearest_on_polyline({1.0, 0.5}, l), (Vec2{1.0, 0.0}));    // inside the first segment
+  EXPECT_EQ(nearest_on_polyline({1.5, 1.2}, l), (Vec2{2.0, 1.2}));    // nearer the second one
+  EXPECT_EQ(nearest_on_polyline({-1.0, -1.0}, l), (Vec2{0.0, 0.0}));  // before the start
+  EXPECT_EQ(nearest_on_polyline({3.0, 3.0}, l), (Vec2{2.0, 2.0}));    // past the end
+  EXPECT_DOUBLE_EQ((nearest_on_polyline({1.5, 1.2}, l) - Vec2{1.5, 1.2}).norm(),
+                   distance_to_polyline({1.5, 1.2}, l));
+  // One point, or a segment of no length, gives that point.
+  EXPECT_EQ(nearest_on_polyline({5.0, 5.0}, {{1.0, 1.0}}), (Vec2{1.0, 1.0}));
+  EXPECT_EQ(nearest_on_polyline({5.0, 5.0}, {{1.0, 1.0}, {1.0, 1.0}}), (Vec2{1.0, 1.0}));
+}
+
 TEST(CellPolylineOptions, ValidateRejectsANonPositiveSampleStep) {
   CellPolylineOptions o;
   EXPECT_FALSE(validate(o).has_value());

@@ -18,13 +18,18 @@ struct Vec2 {
   [[nodiscard]] double norm() const { return std::hypot(x, y); }
 };
 
-/// Distance from p to the segment [a, b] (to a itself when the segment has no length).
-[[nodiscard]] inline double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+/// The point of the segment [a, b] nearest to p (a itself when the segment has no length).
+[[nodiscard]] inline Vec2 nearest_on_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double len2 = ab.dot(ab);
   const double t = len2 > 0.0 ? (p - a).dot(ab) / len2 : 0.0;
-  const double t01 = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);  // the nearest point of the segment
-  return (p - (a + ab * t01)).norm();
+  const double t01 = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+  return a + ab * t01;
+}
+
+/// Distance from p to the segment [a, b] (to a itself when the segment has no length).
+[[nodiscard]] inline double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  return (p - nearest_on_segment(p, a, b)).norm();
 }
 
 }  // namespace tessera

@@ -53,4 +53,8 @@ struct CellPolylineOptions {
 /// Distance from p to a polyline, metres (to its one point when it has one; infinity when empty).
 [[nodiscard]] double distance_to_polyline(Vec2 p, const std::vector<Vec2>& points_m);
 
+/// The point of the polyline nearest to p; its only point when it has one. points_m must not be
+/// empty.
+[[nodiscard]] Vec2 nearest_on_polyline(Vec2 p, const std::vector<Vec2>& points_m);
+
 }  // namespace tessera

@@ -27,18 +27,19 @@ namespace tessera::cli {
 namespace {
 
 /// One line per scan: its stamp, state, whether the pose is to be trusted, the pose, its score,
-/// the share of the scan on the map, and the pose's standard deviations.
+/// the share of the scan on the map and how well that share fits, and the pose's standard
+/// deviations.
 std::string encode_poses_csv(const std::vector<slam::LocalizedScan>& scans) {
   std::string out =
-      "t_s,state,confident,x_m,y_m,theta_rad,score,map_share,sigma_x_m,sigma_y_m,"
+      "t_s,state,confident,x_m,y_m,theta_rad,score,map_share,map_fit,sigma_x_m,sigma_y_m,"
       "sigma_theta_rad\n";
   for (const slam::LocalizedScan& s : scans) {
     const Eigen::Matrix3d& c = s.covariance;
-    out +=
-        fmt::format("{:.6f},{},{:d},{:.4f},{:.4f},{:.5f},{:.4f},{:.3f},{:.4g},{:.4g},{:.4g}\n",
-                    s.t_s, slam::to_string(s.state), s.confident, s.T_map_robot.x, s.T_map_robot.y,
-                    s.T_map_robot.theta, s.score, s.map_share, std::sqrt(std::max(0.0, c(0, 0))),
-                    std::sqrt(std::max(0.0, c(1, 1))), std::sqrt(std::max(0.0, c(2, 2))));
+    out += fmt::format(
+        "{:.6f},{},{:d},{:.4f},{:.4f},{:.5f},{:.4f},{:.3f},{:.3f},{:.4g},{:.4g},{:.4g}\n", s.t_s,
+        slam::to_string(s.state), s.confident, s.T_map_robot.x, s.T_map_robot.y,
+        s.T_map_robot.theta, s.score, s.map_share, s.map_fit, std::sqrt(std::max(0.0, c(0, 0))),
+        std::sqrt(std::max(0.0, c(1, 1))), std::sqrt(std::max(0.0, c(2, 2))));
   }
   return out;
 }

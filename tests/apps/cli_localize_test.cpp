@@ -74,7 +74,7 @@ TEST(CliLocalize, FindsTheRobotInASavedSessionWithNoInitialPose) {
 
   // poses.csv: a header and one line per scan of the window.
   const std::string csv = read_bytes(out.path() / "poses.csv");
-  EXPECT_THAT(csv, HasSubstr("t_s,state,confident,x_m,y_m,theta_rad,score,map_share,"));
+  EXPECT_THAT(csv, HasSubstr("t_s,state,confident,x_m,y_m,theta_rad,score,map_share,map_fit,"));
   EXPECT_EQ(static_cast<int>(std::count(csv.begin(), csv.end(), '\n')),
             loc["scans"].get<int>() + 1);
 }

@@ -73,6 +73,43 @@ TEST(Localizer, TracksARobotFromAKnownPoseWithoutDrift) {
   EXPECT_EQ(localizer.stats().searches, 0);
 }
 
+// A session that mapped only what lay within 0.8 m of its robot: a robot with a 10 m lidar sees
+// far beyond that map. The part of each scan on the map places it, so it is trusted, although
+// counting the points beyond the map as misses would put its score under the bar; and where that
+// part is too thin to hold the pose, it is not trusted.
+TEST(Localizer, ARobotSeeingFarBeyondTheMapIsTrustedOnWhatTheMapShows) {
+  const SimulatedLaserRun session = office_run(3, 0.0);
+  std::vector<const StampedScan*> scans;
+  std::vector<Pose2> poses;
+  for (std::size_t i = 0; i < session.log.scans.size(); ++i) {
+    scans.push_back(&session.log.scans[i]);
+    poses.push_back(session.truth[i].pose);
+  }
+  const ProbabilityGrid near_map = frozen_map(
+      scans, poses, {.min_range_m = 0.1, .max_range_m = 0.8, .missing_ray_length_m = 0.0},
+      RangeInsertOptions{}, 0.05);
+
+  const SimulatedLaserRun run = office_run(11, 40.0);
+  const LocalizerOptions options;
+  Localizer localizer(near_map, options);
+  localizer.set_pose(run.truth.front().pose);
+  int beyond = 0, trusted_beyond = 0;
+  for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
+    const LocalizedScan s = localizer.add_scan(run.log.scans[i]);
+    ASSERT_NE(s.state, LocalizationState::kLost) << "scan " << i;
+    if (s.score < options.min_tracking_score) {  // a scan mostly beyond the map
+      ++beyond;
+      trusted_beyond += s.confident ? 1 : 0;
+    }
+    if (!s.confident) continue;
+    const PoseError e = error_of(s.T_map_robot, run.truth[i].pose);
+    EXPECT_LT(e.m, 0.1) << "scan " << i;
+    EXPECT_LT(e.rad, deg_to_rad(3.0)) << "scan " << i;
+  }
+  ASSERT_GT(beyond, static_cast<int>(run.log.scans.size()) / 4);
+  EXPECT_GE(trusted_beyond, beyond * 4 / 5);
+}
+
 TEST(Localizer, FindsARobotWithNoInitialPoseAndIsNeverConfidentlyWrong) {
   const LocalizerOptions options;
   int found = 0;

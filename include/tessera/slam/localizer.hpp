@@ -50,8 +50,9 @@ struct LocalizerOptions {
   /// of it) stays below min_tracking_score: they lie in the map's free space, not on its walls
   /// (walls are near kMaxProbability = 0.9, free space at kMinProbability = 0.1; half way). Points
   /// beyond the map are no evidence either way: a robot driving where the session never went
-  /// keeps tracking on what it sees of the map and on odometry. min_tracking_score is also the
-  /// confidence (LocalizedScan::score) below which a pose is not to be trusted.
+  /// keeps tracking on what it sees of the map and on odometry. A pose is trusted (confident)
+  /// only when the same two hold the other way: at least min_map_share of the scan on known
+  /// cells, fitting there at least min_tracking_score (LocalizedScan::map_fit).
   double min_tracking_score = 0.5;
   double min_map_share = 0.3;
   /// Tracking is lost after this many seconds of data in which every scan contradicted it.
@@ -129,13 +130,20 @@ struct LocalizedScan {
   /// Mean probability of the scan's points in the map at the pose (kMinProbability when lost):
   /// the confidence that the pose explains the scan.
   double score = 0.0;
-  /// The pose is to be trusted: it has a pose, its score reaches min_tracking_score, and no scan
-  /// since the last one the map explained has contradicted it (right after a kidnapping the
-  /// tracked pose is wrong until the loss is declared; it is not confident meanwhile).
+  /// The pose is to be trusted: it has a pose, at least min_map_share of the scan lies on cells
+  /// the map knows and fits there (map_fit) at least min_tracking_score, and no scan since the
+  /// last one the map explained has contradicted it (right after a kidnapping the tracked pose is
+  /// wrong until the loss is declared; it is not confident meanwhile). Points beyond the map do
+  /// not count against it: a robot that sees half beyond the session's map is placed by the
+  /// other half.
   bool confident = false;
   /// The share of the scan's points on cells the map knows (0 when lost): low where the robot
   /// sees beyond the session's map.
   double map_share = 0.0;
+  /// The mean probability of those points, each at its best cell within one cell (a return lands
+  /// on its wall's cell or beside it): near 0.9 on the map's walls, 0.1 in its free space. 0 when
+  /// lost or when no point is on the map.
+  double map_fit = 0.0;
   /// Covariance of (x, y, theta) in the map frame from the refinement, as Gauss-Newton gives it:
   /// the residual variance times the inverse of J^T J. Large along a corridor's axis, where the
   /// walls do not pin the pose. Zero when lost.

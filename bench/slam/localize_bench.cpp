@@ -256,9 +256,9 @@ int run(int argc, char** argv) {
     const slam::LocalizerStats& st = localizer.stats();
     std::printf(
         "  start %.1f s: confident pose after %.1f s; map share %.2f; first pose after %.1f s, "
-        "%.2f m / %.1f deg off (the SLAM run: %.2f m / %.1f deg), map share %.2f; searches %d: no "
-        "match %d, unfit %d, see through "
-        "%d, ambiguous %d, unconfirmed %d, newest scan alone %d\n",
+        "%.2f m / %.1f deg off (the SLAM run: %.2f m / %.1f deg), map share %.2f; searches %d: "
+        "no match %d, unfit %d, see through %d, ambiguous %d, unconfirmed %d, newest scan alone "
+        "%d\n",
         rest[first].t_s - t0, found_after_s.value_or(NAN), map_share[first],
         posed_after_s.value_or(NAN), posed.tracked.m, posed.tracked.deg, posed.slam.m,
         posed.slam.deg, posed_share, st.searches, st.no_match, st.unfit, st.see_through,

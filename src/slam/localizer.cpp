@@ -32,7 +32,7 @@ Eigen::Matrix3d covariance_of(const RefinedPose& refined, std::size_t points) {
 
 /// The grid the global search scores views in: every cell at the highest probability within one
 /// cell of it (and an unknown cell beside a wall at the wall's). A search tries whole cells and
-/// angle steps that move the farthest point by a cell, so at the best pose it tries a return
+/// angle steps that move the farthest point by a cell, so at the best pose it tries, a return
 /// lies up to about a cell from its wall; in the map itself that is often the free cell beside
 /// the wall (0.1 instead of 0.9), and the true pose of a view then scores hardly more than a
 /// look-alike (on Intel 0.52-0.60 at the tracked pose). Scored so, a return counts as fit_of

@@ -10,9 +10,10 @@
 //    withdrawn. Seeing beyond the map is no contradiction (decision 0024).
 //  - Relocalization: the scans since tracking failed, joined into one view of the last view_s
 //    seconds by a small local SLAM, are searched over the whole map and a full turn by branch and
-//    bound (Hess et al. 2016 Sec. V-B; the loop closer's search with the map as one submap). The
-//    best pose is accepted only when it is clearly best: the best pose of any other place (more
-//    than distinct.linear_m or distinct.angular_rad away) must explain the view markedly worse
+//    bound (Hess et al. 2016 Sec. V-B; the loop closer's search with the map as one submap, each
+//    cell scored at the best probability within one cell of it: decision 0033). The best pose is
+//    accepted only when it is clearly best: the best pose of any other place (more than
+//    distinct.linear_m or distinct.angular_rad away) must explain the view markedly worse
 //    (ambiguity_ratio). A corridor or a row of equal offices stays ambiguous until the view holds
 //    what tells them apart; the localizer then keeps waiting instead of guessing. Nor may the
 //    view see open space where the map has walls (a mirrored place fits the returns but not the

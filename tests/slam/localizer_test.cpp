@@ -29,15 +29,17 @@ SimulatedLaserRun office_run(std::uint64_t seed, double duration_s) {
   return std::move(r).value();
 }
 
-/// A run's scans at its true poses (a perfect session's map), at 0.05 m.
-ProbabilityGrid map_at_truth(const SimulatedLaserRun& run) {
+/// A run's scans at its true poses (a perfect session's map), at 0.05 m, each scan turned into
+/// points as `points` says.
+ProbabilityGrid map_at_truth(const SimulatedLaserRun& run,
+                             const ScanPointsOptions& points = LocalizerOptions{}.points) {
   std::vector<const StampedScan*> scans;
   std::vector<Pose2> poses;
   for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
     scans.push_back(&run.log.scans[i]);
     poses.push_back(run.truth[i].pose);
   }
-  return frozen_map(scans, poses, LocalizerOptions{}.points, RangeInsertOptions{}, 0.05);
+  return frozen_map(scans, poses, points, RangeInsertOptions{}, 0.05);
 }
 
 /// The office mapped by a first robot.
@@ -78,16 +80,8 @@ TEST(Localizer, TracksARobotFromAKnownPoseWithoutDrift) {
 // counting the points beyond the map as misses would put its score under the bar; and where that
 // part is too thin to hold the pose, it is not trusted.
 TEST(Localizer, ARobotSeeingFarBeyondTheMapIsTrustedOnWhatTheMapShows) {
-  const SimulatedLaserRun session = office_run(3, 0.0);
-  std::vector<const StampedScan*> scans;
-  std::vector<Pose2> poses;
-  for (std::size_t i = 0; i < session.log.scans.size(); ++i) {
-    scans.push_back(&session.log.scans[i]);
-    poses.push_back(session.truth[i].pose);
-  }
-  const ProbabilityGrid near_map = frozen_map(
-      scans, poses, {.min_range_m = 0.1, .max_range_m = 0.8, .missing_ray_length_m = 0.0},
-      RangeInsertOptions{}, 0.05);
+  const ProbabilityGrid near_map = map_at_truth(
+      office_run(3, 0.0), {.min_range_m = 0.1, .max_range_m = 0.8, .missing_ray_length_m = 0.0});
 
   const SimulatedLaserRun run = office_run(11, 40.0);
   const LocalizerOptions options;

@@ -128,8 +128,8 @@ struct LocalizedScan {
   LocalizationState state = LocalizationState::kLost;
   /// T_map_robot; meaningful unless state is kLost.
   Pose2 T_map_robot;
-  /// Mean probability of the scan's points in the map at the pose (kMinProbability when lost):
-  /// the confidence that the pose explains the scan.
+  /// Mean probability of all the scan's points in the map at the pose, points beyond the map at
+  /// kMinProbability (kMinProbability when lost): how much of the whole scan the map explains.
   double score = 0.0;
   /// The pose is to be trusted: it has a pose, at least min_map_share of the scan lies on cells
   /// the map knows and fits there (map_fit) at least min_tracking_score, and no scan since the

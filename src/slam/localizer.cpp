@@ -30,14 +30,14 @@ Eigen::Matrix3d covariance_of(const RefinedPose& refined, std::size_t points) {
   return variance * h.inverse();
 }
 
-/// The grid the global search scores views in: every cell at the highest probability within one
-/// cell of it (and an unknown cell beside a wall at the wall's). A search tries whole cells and
-/// angle steps that move the farthest point by a cell, so at the best pose it tries, a return
-/// lies up to about a cell from its wall; in the map itself that is often the free cell beside
-/// the wall (0.1 instead of 0.9), and the true pose of a view then scores hardly more than a
-/// look-alike (on Intel 0.52-0.60 at the tracked pose). Scored so, a return counts as fit_of
-/// counts it: on its wall's cell or beside it.
-ProbabilityGrid search_grid(const ProbabilityGrid& map) {
+/// The map with a cell's slack: every cell at the highest probability within one cell of it (and
+/// an unknown cell beside a wall at the wall's). The global search scores views in it: it tries
+/// whole cells and angle steps that move the farthest point by a cell, so at the best pose it
+/// tries, a return lies up to about a cell from its wall; in the map itself that is often the
+/// free cell beside the wall (0.1 instead of 0.9), and the true pose of a view then scores hardly
+/// more than a look-alike (on Intel 0.52-0.60 at the tracked pose). Scored so, a return counts on
+/// its wall's cell or beside it, as fit_of counts it from the same grid.
+ProbabilityGrid with_slack(const ProbabilityGrid& map) {
   const GridGeometry& g = map.geometry();
   ProbabilityGrid out(g);
   const std::uint16_t half = probability_to_value(0.5);
@@ -133,7 +133,8 @@ struct Localizer::Impl {
   Impl(ProbabilityGrid m, const LocalizerOptions& o)
       : options(o),
         map(std::move(m)),
-        search(search_grid(map), o.branch_and_bound_depth, o.unknown_score) {
+        slack(with_slack(map)),
+        search(slack, o.branch_and_bound_depth, o.unknown_score) {
     const auto box = map.known_box();
     known_lo = map.geometry().center_of(box->min);
     known_hi = map.geometry().center_of(box->max);
@@ -141,6 +142,7 @@ struct Localizer::Impl {
 
   LocalizerOptions options;
   ProbabilityGrid map;
+  ProbabilityGrid slack;  // the map with a cell's slack (with_slack)
   BranchAndBoundMatcher search;
   Vec2 known_lo, known_hi;  // the box of the map's known cells: the poses a search tries
   LocalizerStats stats;
@@ -193,13 +195,7 @@ struct Localizer::Impl {
       const Cell c = g.cell_at_unchecked(T_map_robot * p);
       if (!g.contains(c) || !map.known(c)) continue;
       ++known;
-      float best = 0.0f;
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-          best = std::max(best, map.probability({c.x + dx, c.y + dy}));
-        }
-      }
-      sum += best;
+      sum += slack.probability(c);
     }
     if (points.empty()) return {};
     return {static_cast<double>(known) / static_cast<double>(points.size()),

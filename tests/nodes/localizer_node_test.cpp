@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "support/map_at_truth.hpp"
 #include "tessera/io/ros_message_encoders.hpp"
 #include "tessera/net/in_process_transport.hpp"
 #include "tessera/nodes/log_player.hpp"
@@ -27,17 +28,7 @@ SimulatedLaserRun office_run(std::uint64_t seed, double duration_s) {
 }
 
 // The office mapped by a first robot: its scans at its true poses (a perfect session).
-slam::ProbabilityGrid office_map() {
-  const SimulatedLaserRun run = office_run(3, 0.0);
-  std::vector<const StampedScan*> scans;
-  std::vector<Pose2> poses;
-  for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
-    scans.push_back(&run.log.scans[i]);
-    poses.push_back(run.truth[i].pose);
-  }
-  return slam::frozen_map(scans, poses, slam::LocalizerOptions{}.points, slam::RangeInsertOptions{},
-                          0.05);
-}
+slam::ProbabilityGrid office_map() { return support::map_at_truth(office_run(3, 0.0)); }
 
 // Another robot's run played over topics into the node with no initial pose: it is found, then
 // tracked, and every pose it publishes is the offline localizer's for the same scan, with the

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "support/map_at_truth.hpp"
 #include "support/text_world.hpp"
 #include "tessera/core/angle.hpp"
 #include "tessera/sim/builtin_world.hpp"
@@ -12,6 +13,8 @@
 
 namespace tessera::slam {
 namespace {
+
+using support::map_at_truth;
 
 /// A run through the built-in office (0.1 m cells) with a 270-degree lidar, 5 scans per second and
 /// drifting odometry; `seed` draws the start and the noise.
@@ -27,19 +30,6 @@ SimulatedLaserRun office_run(std::uint64_t seed, double duration_s) {
   Result<SimulatedLaserRun> r = simulate_laser_run(office, o, seed);
   EXPECT_TRUE(r.ok()) << r.error().message;
   return std::move(r).value();
-}
-
-/// A run's scans at its true poses (a perfect session's map), at 0.05 m, each scan turned into
-/// points as `points` says.
-ProbabilityGrid map_at_truth(const SimulatedLaserRun& run,
-                             const ScanPointsOptions& points = LocalizerOptions{}.points) {
-  std::vector<const StampedScan*> scans;
-  std::vector<Pose2> poses;
-  for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
-    scans.push_back(&run.log.scans[i]);
-    poses.push_back(run.truth[i].pose);
-  }
-  return frozen_map(scans, poses, points, RangeInsertOptions{}, 0.05);
 }
 
 /// The office mapped by a first robot.

@@ -223,7 +223,7 @@ std::vector<std::uint8_t> encode_cdr(const OccupancyGridMessage& m) {
   w.u32(m.height);
   pose(w, m.origin);
   w.count(m.data.size());
-  for (const std::int8_t v : m.data) w.i8(v);
+  w.i8s(m.data);
   return std::move(w).take();
 }
 

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -20,6 +21,11 @@ class CdrWriter {
 
   void u8(std::uint8_t v) { bytes_.push_back(v); }
   void i8(std::int8_t v) { bytes_.push_back(static_cast<std::uint8_t>(v)); }
+  /// A sequence's bytes, appended at once (a map's cells: one insert instead of one push each).
+  void i8s(std::span<const std::int8_t> v) {
+    const auto* first = reinterpret_cast<const std::uint8_t*>(v.data());
+    bytes_.insert(bytes_.end(), first, first + v.size());
+  }
   /// A bool: one byte, 1 or 0.
   void boolean(bool v) { u8(v ? 1 : 0); }
   void u32(std::uint32_t v) { put(v); }

@@ -1,7 +1,6 @@
 #include "tessera/grid/occupancy_grid.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <numeric>
 #include <span>
 
@@ -76,13 +75,15 @@ OccupancyGrid known_part(const OccupancyGrid& map) {
   const double r = g.resolution_m();
   OccupancyGrid out(
       GridGeometry({g.origin().x + x0 * r, g.origin().y + y0 * r}, r, x1 - x0 + 1, y1 - y0 + 1));
+  // Row by row: the same cells, the same values (an unknown cell's log-odds are 0 in both).
+  const auto out_w = static_cast<std::size_t>(x1 - x0 + 1);
   for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      if (map.known({x, y})) {
-        out.add_log_odds({x - x0, y - y0}, map.log_odds_at({x, y}),
-                         -std::numeric_limits<float>::max(), std::numeric_limits<float>::max());
-      }
-    }
+    const std::size_t from = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x0);
+    const std::size_t to = static_cast<std::size_t>(y - y0) * out_w;
+    std::copy_n(map.log_odds_.begin() + static_cast<std::ptrdiff_t>(from), out_w,
+                out.log_odds_.begin() + static_cast<std::ptrdiff_t>(to));
+    std::copy_n(map.known_.begin() + static_cast<std::ptrdiff_t>(from), out_w,
+                out.known_.begin() + static_cast<std::ptrdiff_t>(to));
   }
   return out;
 }

@@ -101,6 +101,8 @@ class OccupancyGrid {
   }
 
  private:
+  friend OccupancyGrid known_part(const OccupancyGrid& map);  // copies rows of the two arrays
+
   GridGeometry geometry_;
   std::vector<float> log_odds_;
   std::vector<std::uint8_t> known_;

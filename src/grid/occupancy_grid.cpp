@@ -56,7 +56,7 @@ CellCounts OccupancyGrid::count_states(double occupied_threshold) const {
   return counts;
 }
 
-OccupancyGrid known_part(const OccupancyGrid& map) {
+std::optional<CellBox> known_box(const OccupancyGrid& map) {
   const GridGeometry& g = map.geometry();
   const std::span<const std::uint8_t> known = map.known_flags();
   const auto w = static_cast<std::size_t>(g.width());
@@ -71,21 +71,8 @@ OccupancyGrid known_part(const OccupancyGrid& map) {
     y0 = std::min(y0, y);
     y1 = y;
   }
-  if (x1 < 0) return OccupancyGrid{};
-  const double r = g.resolution_m();
-  OccupancyGrid out(
-      GridGeometry({g.origin().x + x0 * r, g.origin().y + y0 * r}, r, x1 - x0 + 1, y1 - y0 + 1));
-  // Row by row: the same cells, the same values (an unknown cell's log-odds are 0 in both).
-  const auto out_w = static_cast<std::size_t>(x1 - x0 + 1);
-  for (int y = y0; y <= y1; ++y) {
-    const std::size_t from = static_cast<std::size_t>(y) * w + static_cast<std::size_t>(x0);
-    const std::size_t to = static_cast<std::size_t>(y - y0) * out_w;
-    std::copy_n(map.log_odds_.begin() + static_cast<std::ptrdiff_t>(from), out_w,
-                out.log_odds_.begin() + static_cast<std::ptrdiff_t>(to));
-    std::copy_n(map.known_.begin() + static_cast<std::ptrdiff_t>(from), out_w,
-                out.known_.begin() + static_cast<std::ptrdiff_t>(to));
-  }
-  return out;
+  if (x1 < 0) return std::nullopt;
+  return CellBox{{x0, y0}, {x1, y1}};
 }
 
 }  // namespace tessera

@@ -507,12 +507,12 @@ struct ExplorerNode::State {
   // stopped with 8 % of the office unseen. The planning margin is not sent either.
   Status publish_team_map() {
     last_team_map = SteadyClock::now();
-    const OccupancyGrid known = known_part(direct_map);
-    if (known.geometry().size() == 0) return Ok{};
+    const std::optional<CellBox> known = known_box(direct_map);
+    if (!known) return Ok{};
     ++stats.team_maps_published;
-    return transport.publish(team_map_writer,
-                             encode_cdr(occupancy_grid_message(known, std::llround(now_s * 1e9),
-                                                               options.name + "/team")));
+    return transport.publish(team_map_writer, encode_cdr(occupancy_grid_message(
+                                                  direct_map, *known, std::llround(now_s * 1e9),
+                                                  options.name + "/team")));
   }
 
   Status spin() {

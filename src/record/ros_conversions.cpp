@@ -1,5 +1,6 @@
 #include "tessera/record/ros_conversions.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -11,21 +12,34 @@ std::int64_t to_ns(double t_s) { return std::llround(t_s * 1e9); }
 OccupancyGridMessage occupancy_grid_message(const OccupancyGrid& map, std::int64_t stamp_ns,
                                             const std::string& frame) {
   const GridGeometry& g = map.geometry();
+  return occupancy_grid_message(map, {{0, 0}, {g.width() - 1, g.height() - 1}}, stamp_ns, frame);
+}
+
+OccupancyGridMessage occupancy_grid_message(const OccupancyGrid& map, const CellBox& box,
+                                            std::int64_t stamp_ns, const std::string& frame) {
+  const GridGeometry& g = map.geometry();
+  const double r = g.resolution_m();
+  const int width = std::max(0, box.max.x - box.min.x + 1);
+  const int height = std::max(0, box.max.y - box.min.y + 1);
   OccupancyGridMessage m;
   m.header = {stamp_ns, frame};
   m.map_load_time_ns = stamp_ns;
-  m.resolution_m = static_cast<float>(g.resolution_m());
-  m.width = static_cast<std::uint32_t>(g.width());
-  m.height = static_cast<std::uint32_t>(g.height());
-  m.origin = planar_transform(g.origin().x, g.origin().y, 0.0);
-  m.data.resize(g.size());
+  m.resolution_m = static_cast<float>(r);
+  m.width = static_cast<std::uint32_t>(width);
+  m.height = static_cast<std::uint32_t>(height);
+  m.origin = planar_transform(g.origin().x + box.min.x * r, g.origin().y + box.min.y * r, 0.0);
+  m.data.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   // GridGeometry's index is ROS's: row-major from the origin cell, x along a row.
   const std::span<const float> log_odds = map.log_odds_values();
   const std::span<const std::uint8_t> known = map.known_flags();
-  for (std::size_t i = 0; i < m.data.size(); ++i) {
-    // Percent rounded half up (p >= 0), as std::lround would, without its libm call per cell.
-    m.data[i] = known[i] ? static_cast<std::int8_t>(100.0 * probability(log_odds[i]) + 0.5)
-                         : std::int8_t{-1};
+  std::size_t out = 0;
+  for (int y = box.min.y; y <= box.max.y; ++y) {
+    std::size_t i = g.index_of({box.min.x, y});
+    for (int x = 0; x < width; ++x, ++i, ++out) {
+      // Percent rounded half up (p >= 0), as std::lround would, without its libm call per cell.
+      m.data[out] = known[i] ? static_cast<std::int8_t>(100.0 * probability(log_odds[i]) + 0.5)
+                             : std::int8_t{-1};
+    }
   }
   return m;
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace tessera {
@@ -156,22 +157,22 @@ TEST(OccupancyGrid, CountStatesFollowsTheThresholdView) {
   EXPECT_EQ(at_07.occupied, 1u);
 }
 
-// What a robot sends of its map: the known cells' box, each cell where it was in space.
-TEST(OccupancyGrid, KnownPartIsTheBoxOfTheKnownCellsInPlace) {
+// What a robot sends of its map: the smallest box that holds every known cell.
+TEST(OccupancyGrid, KnownBoxHoldsEveryKnownCell) {
   OccupancyGrid g(GridGeometry({-1.0, 2.0}, 0.5, 10, 8));
   g.set_probability({3, 2}, 0.2);
   g.set_probability({6, 5}, 0.9);
-  const OccupancyGrid part = known_part(g);
-  EXPECT_EQ(part.geometry(), GridGeometry({0.5, 3.0}, 0.5, 4, 4));
-  EXPECT_NEAR(*part.probability_at({0, 0}), 0.2, 1e-6);
-  EXPECT_NEAR(*part.probability_at({3, 3}), 0.9, 1e-6);
-  EXPECT_FALSE(part.known({1, 1}));
-  EXPECT_EQ(part.known_count(), 2u);
-  EXPECT_EQ(known_part(OccupancyGrid(GridGeometry({0.0, 0.0}, 1.0, 3, 3))).geometry().size(), 0u);
+  const auto same = [](const std::optional<CellBox>& b, Cell min, Cell max) {
+    return b && b->min == min && b->max == max;
+  };
+  EXPECT_TRUE(same(known_box(g), {3, 2}, {6, 5}));
+  EXPECT_FALSE(known_box(OccupancyGrid(GridGeometry({0.0, 0.0}, 1.0, 3, 3))).has_value());
   // The box's sides come from different rows: the leftmost and rightmost known cells of any row.
   g.set_probability({1, 4}, 0.5);
   g.set_probability({9, 4}, 0.5);
-  EXPECT_EQ(known_part(g).geometry(), GridGeometry({-0.5, 3.0}, 0.5, 9, 4));
+  EXPECT_TRUE(same(known_box(g), {1, 2}, {9, 5}));
+  g.set_unknown({6, 5});
+  EXPECT_TRUE(same(known_box(g), {1, 2}, {9, 4}));
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 namespace tessera {
@@ -24,6 +25,30 @@ TEST(RosConversions, OccupancyGridIsRowMajorFromTheOriginWithUnknownAsMinusOne) 
   EXPECT_DOUBLE_EQ(m.origin.qw, 1.0);
   EXPECT_EQ(m.data, (std::vector<std::int8_t>{0, -1, 100, -1, 70, -1}));
   EXPECT_EQ(m.header.frame_id, "map");
+}
+
+// What a robot sends of its map: the known cells' box, each cell where it was in space, the same
+// values as the whole map's message there.
+TEST(RosConversions, AKnownBoxIsSentInPlace) {
+  OccupancyGrid map(GridGeometry({-1.0, 2.0}, 0.5, 10, 8));
+  map.set_probability({3, 2}, 0.2);
+  map.set_probability({6, 5}, 0.9);
+  const std::optional<CellBox> box = known_box(map);
+  ASSERT_TRUE(box.has_value());
+  const OccupancyGridMessage part = occupancy_grid_message(map, *box, 5, "r1/team");
+  EXPECT_EQ(part.width, 4U);
+  EXPECT_EQ(part.height, 4U);
+  EXPECT_DOUBLE_EQ(part.origin.x_m, 0.5);
+  EXPECT_DOUBLE_EQ(part.origin.y_m, 3.0);
+  const OccupancyGridMessage whole = occupancy_grid_message(map, 5, "r1/team");
+  for (std::uint32_t y = 0; y < part.height; ++y) {
+    for (std::uint32_t x = 0; x < part.width; ++x) {
+      EXPECT_EQ(part.data[y * 4 + x], whole.data[(y + 2) * 10 + x + 3]) << x << "," << y;
+    }
+  }
+  EXPECT_EQ(part.data[0], 20);
+  EXPECT_EQ(part.data[15], 90);
+  EXPECT_EQ(part.data[5], -1);
 }
 
 TEST(RosConversions, PlanarPosesBecomeYawQuaternions) {

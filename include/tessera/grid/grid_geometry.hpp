@@ -9,6 +9,12 @@
 
 namespace tessera {
 
+/// A rectangle of a grid's cells, both corners included.
+struct CellBox {
+  Cell min;
+  Cell max;
+};
+
 /// Where a grid lies in the map frame (docs/conventions.md): cell (0,0) is the lower-left cell and
 /// its lower-left corner is origin(); x is the column, y the row; row-major, index = y*width + x;
 /// world->cell uses floor and a cell's centre is at +0.5.

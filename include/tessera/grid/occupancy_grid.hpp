@@ -101,16 +101,13 @@ class OccupancyGrid {
   }
 
  private:
-  friend OccupancyGrid known_part(const OccupancyGrid& map);  // copies rows of the two arrays
-
   GridGeometry geometry_;
   std::vector<float> log_odds_;
   std::vector<std::uint8_t> known_;
 };
 
-/// The smallest part of `map` that holds every known cell, cells where they were in space (a
-/// robot's map cut to what it knows before it is sent); an empty grid when nothing is known.
-/// Cost: O(cells).
-[[nodiscard]] OccupancyGrid known_part(const OccupancyGrid& map);
+/// The smallest box of cells that holds every known cell of `map` (what a robot sends of its
+/// map); nullopt when nothing is known. Cost: O(cells), a row at a time.
+[[nodiscard]] std::optional<CellBox> known_box(const OccupancyGrid& map);
 
 }  // namespace tessera

@@ -23,6 +23,11 @@ namespace tessera {
 [[nodiscard]] OccupancyGridMessage occupancy_grid_message(const OccupancyGrid& map,
                                                           std::int64_t stamp_ns,
                                                           const std::string& frame);
+/// The same for the cells of `box` only (inside the map), at their place in space: origin the
+/// box's lower-left corner. A robot sends the known_box() of its map so.
+[[nodiscard]] OccupancyGridMessage occupancy_grid_message(const OccupancyGrid& map,
+                                                          const CellBox& box, std::int64_t stamp_ns,
+                                                          const std::string& frame);
 
 /// nav_msgs/Path through `poses`, each stamped with `stamps_ns` (same length) in `frame`.
 [[nodiscard]] PathMessage path_message(std::span<const Pose2> poses,

@@ -75,10 +75,7 @@ class ProbabilityGrid {
   void finish_update();
 
   /// The smallest box of cells that holds every known cell; nullopt for an empty grid.
-  struct Box {
-    Cell min;
-    Cell max;  // inclusive
-  };
+  using Box = CellBox;
   [[nodiscard]] std::optional<Box> known_box() const;
 
   /// The known part as an OccupancyGrid (unknown stays unknown), cropped to known_box() with

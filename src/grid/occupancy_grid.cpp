@@ -75,4 +75,22 @@ std::optional<CellBox> known_box(const OccupancyGrid& map) {
   return CellBox{{x0, y0}, {x1, y1}};
 }
 
+OccupancyGrid known_part(const OccupancyGrid& map) {
+  const std::optional<CellBox> box = known_box(map);
+  if (!box) return OccupancyGrid{};
+  const GridGeometry& g = map.geometry();
+  const double r = g.resolution_m();
+  const int w = box->max.x - box->min.x + 1;
+  OccupancyGrid out(GridGeometry({g.origin().x + box->min.x * r, g.origin().y + box->min.y * r}, r,
+                                 w, box->max.y - box->min.y + 1));
+  // Row by row: the same cells, the same values (an unknown cell's log-odds are 0 in both).
+  for (int y = box->min.y; y <= box->max.y; ++y) {
+    const auto from = static_cast<std::ptrdiff_t>(g.index_of({box->min.x, y}));
+    const auto to = static_cast<std::ptrdiff_t>(out.geometry().index_of({0, y - box->min.y}));
+    std::copy_n(map.log_odds_.begin() + from, w, out.log_odds_.begin() + to);
+    std::copy_n(map.known_.begin() + from, w, out.known_.begin() + to);
+  }
+  return out;
+}
+
 }  // namespace tessera

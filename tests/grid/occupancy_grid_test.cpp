@@ -175,5 +175,19 @@ TEST(OccupancyGrid, KnownBoxHoldsEveryKnownCell) {
   EXPECT_TRUE(same(known_box(g), {1, 2}, {9, 4}));
 }
 
+// The known box as a grid of its own, each cell where it was in space.
+TEST(OccupancyGrid, KnownPartIsTheBoxOfTheKnownCellsInPlace) {
+  OccupancyGrid g(GridGeometry({-1.0, 2.0}, 0.5, 10, 8));
+  g.set_probability({3, 2}, 0.2);
+  g.set_probability({6, 5}, 0.9);
+  const OccupancyGrid part = known_part(g);
+  EXPECT_EQ(part.geometry(), GridGeometry({0.5, 3.0}, 0.5, 4, 4));
+  EXPECT_NEAR(*part.probability_at({0, 0}), 0.2, 1e-6);
+  EXPECT_NEAR(*part.probability_at({3, 3}), 0.9, 1e-6);
+  EXPECT_FALSE(part.known({1, 1}));
+  EXPECT_EQ(part.known_count(), 2u);
+  EXPECT_EQ(known_part(OccupancyGrid(GridGeometry({0.0, 0.0}, 1.0, 3, 3))).geometry().size(), 0u);
+}
+
 }  // namespace
 }  // namespace tessera

@@ -101,6 +101,8 @@ class OccupancyGrid {
   }
 
  private:
+  friend OccupancyGrid known_part(const OccupancyGrid& map);  // copies rows of the two arrays
+
   GridGeometry geometry_;
   std::vector<float> log_odds_;
   std::vector<std::uint8_t> known_;
@@ -109,5 +111,9 @@ class OccupancyGrid {
 /// The smallest box of cells that holds every known cell of `map` (what a robot sends of its
 /// map); nullopt when nothing is known. Cost: O(cells), a row at a time.
 [[nodiscard]] std::optional<CellBox> known_box(const OccupancyGrid& map);
+
+/// The cells of known_box(map) as a grid of their own, each where it was in space (a map cut to
+/// what it knows); an empty grid when nothing is known. Cost: O(cells).
+[[nodiscard]] OccupancyGrid known_part(const OccupancyGrid& map);
 
 }  // namespace tessera

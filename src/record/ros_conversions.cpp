@@ -33,7 +33,7 @@ OccupancyGridMessage occupancy_grid_message(const OccupancyGrid& map, const Cell
   const std::span<const float> log_odds = map.log_odds_values();
   const std::span<const std::uint8_t> known = map.known_flags();
   std::size_t out = 0;
-  for (int y = box.min.y; y <= box.max.y; ++y) {
+  for (int y = box.min.y; width > 0 && y <= box.max.y; ++y) {
     std::size_t i = g.index_of({box.min.x, y});
     for (int x = 0; x < width; ++x, ++i, ++out) {
       // Percent rounded half up (p >= 0), as std::lround would, without its libm call per cell.

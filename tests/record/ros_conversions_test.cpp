@@ -25,6 +25,9 @@ TEST(RosConversions, OccupancyGridIsRowMajorFromTheOriginWithUnknownAsMinusOne) 
   EXPECT_DOUBLE_EQ(m.origin.qw, 1.0);
   EXPECT_EQ(m.data, (std::vector<std::int8_t>{0, -1, 100, -1, 70, -1}));
   EXPECT_EQ(m.header.frame_id, "map");
+  // A grid with no cells is a message with none (a grid may be 0 wide and still have rows).
+  EXPECT_TRUE(occupancy_grid_message(OccupancyGrid(GridGeometry({0.0, 0.0}, 0.5, 0, 3)), 5, "map")
+                  .data.empty());
 }
 
 // What a robot sends of its map: the known cells' box, each cell where it was in space, the same

@@ -57,22 +57,7 @@ CellCounts OccupancyGrid::count_states(double occupied_threshold) const {
 }
 
 std::optional<CellBox> known_box(const OccupancyGrid& map) {
-  const GridGeometry& g = map.geometry();
-  const std::span<const std::uint8_t> known = map.known_flags();
-  const auto w = static_cast<std::size_t>(g.width());
-  int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
-  for (int y = 0; y < g.height(); ++y) {
-    const auto row = known.subspan(static_cast<std::size_t>(y) * w, w);
-    const auto first = std::find(row.begin(), row.end(), std::uint8_t{1});
-    if (first == row.end()) continue;
-    const auto last = std::find(row.rbegin(), row.rend(), std::uint8_t{1});
-    x0 = std::min(x0, static_cast<int>(first - row.begin()));
-    x1 = std::max(x1, static_cast<int>(row.rend() - last) - 1);
-    y0 = std::min(y0, y);
-    y1 = y;
-  }
-  if (x1 < 0) return std::nullopt;
-  return CellBox{{x0, y0}, {x1, y1}};
+  return nonzero_box(map.geometry(), map.known_flags());
 }
 
 OccupancyGrid known_part(const OccupancyGrid& map) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "tessera/grid/ray_cast.hpp"
 
@@ -107,20 +108,8 @@ void ProbabilityGrid::finish_update() {
 }
 
 std::optional<ProbabilityGrid::Box> ProbabilityGrid::known_box() const {
-  std::optional<Box> box;
-  for (int y = 0; y < geometry_.height(); ++y) {
-    const std::size_t row = geometry_.index_of({0, y});
-    for (int x = 0; x < geometry_.width(); ++x) {
-      if (values_[row + static_cast<std::size_t>(x)] == kUnknownCellValue) continue;
-      if (!box) {
-        box = Box{{x, y}, {x, y}};
-      } else {
-        box->min = {std::min(box->min.x, x), std::min(box->min.y, y)};
-        box->max = {std::max(box->max.x, x), std::max(box->max.y, y)};
-      }
-    }
-  }
-  return box;
+  static_assert(kUnknownCellValue == 0, "nonzero_box finds the known cells");
+  return nonzero_box(geometry_, std::span<const std::uint16_t>(values_));
 }
 
 OccupancyGrid ProbabilityGrid::to_occupancy_grid(int padding_cells) const {

@@ -1,7 +1,9 @@
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <span>
 
 #include "tessera/core/assert.hpp"
 #include "tessera/core/cell.hpp"
@@ -71,5 +73,28 @@ class GridGeometry {
   int width_ = 0;
   int height_ = 0;
 };
+
+/// The smallest box of the cells of `g` whose value in `cells` (one per cell, in index_of order)
+/// is not zero: the known cells of a grid that stores "unknown" as 0. Nullopt when there is none.
+/// Cost: O(cells), a row at a time.
+template <typename T>
+[[nodiscard]] std::optional<CellBox> nonzero_box(const GridGeometry& g, std::span<const T> cells) {
+  TESSERA_ASSERT(cells.size() == g.size());
+  const auto w = static_cast<std::size_t>(g.width());
+  int x0 = g.width(), y0 = g.height(), x1 = -1, y1 = -1;
+  const auto nonzero = [](T v) { return v != T{}; };
+  for (int y = 0; y < g.height(); ++y) {
+    const auto row = cells.subspan(static_cast<std::size_t>(y) * w, w);
+    const auto first = std::find_if(row.begin(), row.end(), nonzero);
+    if (first == row.end()) continue;
+    const auto last = std::find_if(row.rbegin(), row.rend(), nonzero);
+    x0 = std::min(x0, static_cast<int>(first - row.begin()));
+    x1 = std::max(x1, static_cast<int>(row.rend() - last) - 1);
+    y0 = std::min(y0, y);
+    y1 = y;
+  }
+  if (x1 < 0) return std::nullopt;
+  return CellBox{{x0, y0}, {x1, y1}};
+}
 
 }  // namespace tessera

@@ -7,6 +7,7 @@
 
 #include "internal/opencv_features.hpp"
 #include "tessera/core/assert.hpp"
+#include "tessera/fusion/descriptor_matching.hpp"
 
 namespace tessera::fusion {
 
@@ -76,48 +77,54 @@ ImageDescription describe_image(const GrayImageView& image, const AppearanceOpti
   return d;
 }
 
+namespace {
+
+/// The pixel positions of a pair's matched features (query's, candidate's).
+struct MatchedPoints {
+  std::vector<cv::Point2f> query, candidate;
+};
+
+/// Ratio test on the two nearest candidate features of each query feature, then the mutual test
+/// (as node_matcher.cpp).
+MatchedPoints matched_points(const ImageDescription& query, const ImageDescription& candidate,
+                             const AppearanceOptions& o) {
+  MatchedPoints p;
+  for (const DescriptorMatch& m : ratio_test_matches(query.descriptors, candidate.descriptors,
+                                                     query.feature_type, o.ratio, o.mutual)) {
+    const auto iq = static_cast<std::size_t>(m.query);
+    const auto ic = static_cast<std::size_t>(m.train);
+    p.query.emplace_back(static_cast<float>(query.u_px[iq]), static_cast<float>(query.v_px[iq]));
+    p.candidate.emplace_back(static_cast<float>(candidate.u_px[ic]),
+                             static_cast<float>(candidate.v_px[ic]));
+  }
+  return p;
+}
+
+/// The matches and, when there are at least min_matches, how many of them one epipolar geometry
+/// explains.
+PairScore verified(const MatchedPoints& p, const AppearanceOptions& o) {
+  PairScore score;
+  score.matches = static_cast<int>(p.query.size());
+  if (score.matches < o.min_matches) return score;
+  // Geometric verification. FM_RANSAC (with 15 or more points) draws its samples from a cv::RNG
+  // that each call seeds with the same constant (OpenCV ptsetreg.cpp), so it is deterministic.
+  std::vector<std::uint8_t> mask;
+  const cv::Mat F =
+      cv::findFundamentalMat(p.query, p.candidate, cv::FM_RANSAC, o.epipolar_threshold_px,
+                             o.ransac_confidence, o.ransac_max_iterations, mask);
+  if (F.empty() || mask.size() != p.query.size()) return score;
+  score.inliers = static_cast<int>(
+      std::count_if(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; }));
+  return score;
+}
+
+}  // namespace
+
 PairScore score_image_pair(const ImageDescription& query, const ImageDescription& candidate,
                            const AppearanceOptions& o) {
   TESSERA_ASSERT(query.feature_type == candidate.feature_type);
   TESSERA_ASSERT(!validate(o));
-  PairScore score;
-  const cv::Mat dq = internal::descriptor_mat(query.descriptors, query.feature_type);
-  const cv::Mat dc = internal::descriptor_mat(candidate.descriptors, candidate.feature_type);
-  if (dq.rows < 1 || dc.rows < 2) return score;
-
-  // Ratio test on the two nearest candidate features of each query feature, then the mutual test
-  // (as node_matcher.cpp).
-  cv::BFMatcher matcher(is_binary(query.feature_type) ? cv::NORM_HAMMING : cv::NORM_L2);
-  std::vector<std::vector<cv::DMatch>> knn;
-  matcher.knnMatch(dq, dc, knn, 2);
-  std::vector<int> back;
-  if (o.mutual) {
-    std::vector<cv::DMatch> reverse;
-    matcher.match(dc, dq, reverse);
-    back.assign(static_cast<std::size_t>(dc.rows), -1);
-    for (const cv::DMatch& m : reverse) back[static_cast<std::size_t>(m.queryIdx)] = m.trainIdx;
-  }
-  std::vector<cv::Point2f> pq, pc;
-  for (const std::vector<cv::DMatch>& k : knn) {
-    if (k.size() < 2 || !(k[0].distance < o.ratio * k[1].distance)) continue;
-    if (o.mutual && back[static_cast<std::size_t>(k[0].trainIdx)] != k[0].queryIdx) continue;
-    const auto iq = static_cast<std::size_t>(k[0].queryIdx);
-    const auto ic = static_cast<std::size_t>(k[0].trainIdx);
-    pq.emplace_back(static_cast<float>(query.u_px[iq]), static_cast<float>(query.v_px[iq]));
-    pc.emplace_back(static_cast<float>(candidate.u_px[ic]), static_cast<float>(candidate.v_px[ic]));
-  }
-  score.matches = static_cast<int>(pq.size());
-  if (score.matches < o.min_matches) return score;
-
-  // Geometric verification. FM_RANSAC (with 15 or more points) draws its samples from a cv::RNG
-  // that each call seeds with the same constant (OpenCV ptsetreg.cpp), so it is deterministic.
-  std::vector<std::uint8_t> mask;
-  const cv::Mat F = cv::findFundamentalMat(pq, pc, cv::FM_RANSAC, o.epipolar_threshold_px,
-                                           o.ransac_confidence, o.ransac_max_iterations, mask);
-  if (F.empty() || mask.size() != pq.size()) return score;
-  score.inliers = static_cast<int>(
-      std::count_if(mask.begin(), mask.end(), [](std::uint8_t m) { return m != 0; }));
-  return score;
+  return verified(matched_points(query, candidate, o), o);
 }
 
 std::vector<LoopHypothesis> best_loop_hypotheses(std::span<const ImageDescription> images,
@@ -131,9 +138,26 @@ std::vector<LoopHypothesis> best_loop_hypotheses(std::span<const ImageDescriptio
     h.query = i;
     const std::size_t qi = static_cast<std::size_t>(i);
     TESSERA_ASSERT(images[qi].feature_type == o.feature_type);
+    // Every candidate's matches first; the geometric verification (most of the cost) then runs
+    // from the most matches down and stops where a candidate's matches, the most inliers it could
+    // have, cannot beat the best so far: the same hypothesis as verifying every candidate, where
+    // the most inliers win and the lower index wins a tie.
+    std::vector<MatchedPoints> matched;
+    std::vector<int> order;
     for (int j = 0; j < i - o.short_term_memory; ++j) {
-      const PairScore s = score_image_pair(images[qi], images[static_cast<std::size_t>(j)], o);
-      if (s.inliers > h.score) {  // strictly: the lower index wins a tie
+      matched.push_back(matched_points(images[qi], images[static_cast<std::size_t>(j)], o));
+      order.push_back(j);
+    }
+    const auto size_of = [&](int j) { return matched[static_cast<std::size_t>(j)].query.size(); };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return size_of(a) > size_of(b); });
+    for (const int j : order) {
+      const int most = static_cast<int>(size_of(j));
+      if (most < h.score || most == 0) break;
+      if (most == h.score && j > h.candidate)
+        continue;  // at best a tie, which the lower index wins
+      const PairScore s = verified(matched[static_cast<std::size_t>(j)], o);
+      if (s.inliers > h.score || (s.inliers == h.score && s.inliers > 0 && j < h.candidate)) {
         h.candidate = j;
         h.score = s.inliers;
         h.matches = s.matches;

@@ -9,12 +9,12 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/core/eigen.hpp>
-#include <opencv2/features2d.hpp>
 #include <vector>
 
 #include "internal/fixed_text.hpp"
 #include "internal/left_perturbation.hpp"
 #include "internal/opencv_features.hpp"
+#include "tessera/fusion/descriptor_matching.hpp"
 #include "tessera/fusion/rigid_fit.hpp"
 
 namespace tessera::fusion {
@@ -32,24 +32,10 @@ struct Match {
 /// Ratio test on the two nearest previous features of each current feature, then the mutual test.
 std::vector<Match> match_descriptors(const ImageNode& prev, const ImageNode& curr,
                                      const NodeMatcherOptions& o) {
-  const cv::Mat dp = internal::descriptor_mat(prev.descriptors, prev.feature_type);
-  const cv::Mat dc = internal::descriptor_mat(curr.descriptors, curr.feature_type);
-  if (dp.rows < 2 || dc.rows < 1) return {};
-  cv::BFMatcher matcher(is_binary(prev.feature_type) ? cv::NORM_HAMMING : cv::NORM_L2);
-  std::vector<std::vector<cv::DMatch>> knn;
-  matcher.knnMatch(dc, dp, knn, 2);
-  std::vector<int> back;  // nearest current feature of each previous feature
-  if (o.mutual) {
-    std::vector<cv::DMatch> reverse;
-    matcher.match(dp, dc, reverse);
-    back.assign(static_cast<std::size_t>(dp.rows), -1);
-    for (const cv::DMatch& m : reverse) back[static_cast<std::size_t>(m.queryIdx)] = m.trainIdx;
-  }
   std::vector<Match> out;
-  for (const std::vector<cv::DMatch>& k : knn) {
-    if (k.size() < 2 || !(k[0].distance < o.ratio * k[1].distance)) continue;
-    if (o.mutual && back[static_cast<std::size_t>(k[0].trainIdx)] != k[0].queryIdx) continue;
-    out.push_back({k[0].trainIdx, k[0].queryIdx});
+  for (const DescriptorMatch& m : ratio_test_matches(curr.descriptors, prev.descriptors,
+                                                     prev.feature_type, o.ratio, o.mutual)) {
+    out.push_back({m.train, m.query});
   }
   return out;
 }

@@ -136,6 +136,39 @@ TEST(AppearanceRecall, ImagesInTheShortTermMemoryAreNotCandidates) {
   for (int i = 0; i < 4; ++i) EXPECT_EQ(h[static_cast<std::size_t>(i)].query, i);
 }
 
+// best_loop_hypotheses verifies only the candidates whose matches could beat the best so far;
+// its answer must be that of scoring every candidate, ties to the lower index included (images 0
+// and 1 are the same picture, so they tie on every later view of that place).
+TEST(AppearanceRecall, HypothesesAreTheBestOfScoringEveryCandidate) {
+  const Canvas p = random_canvas(400, 300, 8);
+  const Canvas q = random_canvas(400, 300, 9);
+  const std::vector<std::vector<std::uint8_t>> pixels = {
+      crop(p, 0, 0, 320, 240),   crop(p, 0, 0, 320, 240),   crop(q, 0, 0, 320, 240),
+      crop(q, 40, 30, 320, 240), crop(p, 20, 10, 320, 240), crop(q, 10, 50, 320, 240),
+      crop(p, 60, 40, 320, 240)};
+  for (const FeatureType t : kAllTypes) {
+    AppearanceOptions o = options_for(t);
+    o.short_term_memory = 0;
+    std::vector<ImageDescription> d;
+    for (const auto& px : pixels) d.push_back(describe_image({320, 240, px}, o));
+    const std::vector<LoopHypothesis> h = best_loop_hypotheses(d, o);
+    ASSERT_EQ(h.size(), pixels.size());
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      LoopHypothesis every;
+      every.query = static_cast<int>(i);
+      for (std::size_t j = 0; j < i; ++j) {
+        const PairScore s = score_image_pair(d[i], d[j], o);
+        if (s.inliers > every.score)
+          every = {static_cast<int>(i), static_cast<int>(j), s.inliers, s.matches};
+      }
+      EXPECT_EQ(h[i].candidate, every.candidate) << to_string(t) << " query " << i;
+      EXPECT_EQ(h[i].score, every.score) << to_string(t) << " query " << i;
+      EXPECT_EQ(h[i].matches, every.matches) << to_string(t) << " query " << i;
+    }
+    EXPECT_EQ(h[4].candidate, 0) << to_string(t);  // a view of p: image 0 wins its tie with 1
+  }
+}
+
 TEST(AppearanceRecall, AnImageWithoutFeaturesScoresZero) {
   const std::vector<std::uint8_t> flat(320 * 240, 200);
   const Canvas place = random_canvas(400, 300, 6);

@@ -84,7 +84,8 @@ struct PairScore {
 
 /// The image-matching score of two described images. Symmetric up to the order of matches.
 /// Deterministic. Preconditions: both built with the same feature type; validate(o) is empty.
-/// Cost: a brute-force descriptor search in both directions, O(n_a * n_b), plus one RANSAC.
+/// Cost: an exhaustive descriptor search, O(n_a * n_b) distances (descriptor_matching.hpp), plus
+/// one RANSAC.
 [[nodiscard]] PairScore score_image_pair(const ImageDescription& query,
                                          const ImageDescription& candidate,
                                          const AppearanceOptions& o);
@@ -100,7 +101,8 @@ struct LoopHypothesis {
 
 /// Hypotheses for every image in order: image i is scored against images 0 .. i - 1 -
 /// o.short_term_memory (none for the first images). Deterministic. Precondition: validate(o) is
-/// empty; every description has o.feature_type. Cost: O(n^2) score_image_pair calls.
+/// empty; every description has o.feature_type. Cost: O(n^2) descriptor searches; RANSAC only
+/// for the candidates whose matches could still beat the best inliers so far (most matches first).
 [[nodiscard]] std::vector<LoopHypothesis> best_loop_hypotheses(
     std::span<const ImageDescription> images, const AppearanceOptions& o);
 

@@ -10,6 +10,7 @@
 #include "tessera/core/time_ns.hpp"
 #include "tessera/io/ros_messages.hpp"
 #include "tessera/io/tf_tree.hpp"
+#include "tessera/sensors/range_scan.hpp"
 
 namespace tessera {
 namespace {
@@ -199,7 +200,9 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
         return input_error(at(file, scans_t, i) + ": laser pose: " + T_base_laser.error().message +
                            " (tf frames: " + (known.empty() ? "none" : known) + ")");
       }
-      s.laser_in_robot = planar_pose(*T_base_laser);
+      const PlanarLaser placed = planar_laser(*T_base_laser);
+      s.laser_in_robot = placed.T_base_laser;
+      if (placed.upside_down) *scan = mirrored(std::move(*scan));
     }
     s.scan = std::move(*scan);
     out.log.scans.push_back(std::move(s));

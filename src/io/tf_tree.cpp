@@ -79,6 +79,13 @@ Pose2 planar_pose(const RosTransform& T) {
   return {T.x_m, T.y_m, normalize_angle(yaw)};
 }
 
+PlanarLaser planar_laser(const RosTransform& T_base_laser) {
+  const Quat q = normalized(rotation(T_base_laser));
+  // The z component of the laser's z axis in the base frame: R(2, 2) of the quaternion.
+  const double z_up = 1.0 - 2.0 * (q.x * q.x + q.y * q.y);
+  return {planar_pose(T_base_laser), z_up < 0.0};
+}
+
 std::string_view tf_frame_name(std::string_view frame) {
   while (!frame.empty() && frame.front() == '/') frame.remove_prefix(1);
   return frame;

@@ -12,6 +12,7 @@
 #include "tessera/io/tf_tree.hpp"
 #include "tessera/net/ros_names.hpp"
 #include "tessera/record/ros_conversions.hpp"
+#include "tessera/sensors/range_scan.hpp"
 
 namespace tessera::nodes {
 namespace {
@@ -137,12 +138,12 @@ struct ScanInput::State {
                               [](const PoseAtNs& a, const PoseAtNs& b) { return a.t_ns < b.t_ns; });
   }
 
-  // T_base_laser of a scan frame, if the tf tree knows it.
-  [[nodiscard]] std::optional<Pose2> laser_in_robot(const PendingScan& s) const {
-    if (s.frame == base_frame) return Pose2{};
+  // T_base_laser of a scan frame (and whether the laser is upside down), if the tf tree knows it.
+  [[nodiscard]] std::optional<PlanarLaser> laser_in_robot(const PendingScan& s) const {
+    if (s.frame == base_frame) return PlanarLaser{};
     Result<RosTransform> T = tf.lookup(base_frame, s.frame, s.t_ns);
     if (!T.ok()) return std::nullopt;
-    return planar_pose(*T);
+    return planar_laser(*T);
   }
 
   // Odometry goes once no waiting scan can need it: older than every pending scan and than the
@@ -181,7 +182,7 @@ std::optional<ReadyScan> ScanInput::next(bool flush) {
     const bool odometry_known =
         !s.odometry.empty() && (flush || p.odometry_passed || s.has_odometry_at(p.t_ns));
     if (!odometry_known && !flush) return std::nullopt;
-    const std::optional<Pose2> laser = odometry_known ? s.laser_in_robot(p) : std::nullopt;
+    const std::optional<PlanarLaser> laser = odometry_known ? s.laser_in_robot(p) : std::nullopt;
     if (odometry_known && !laser && !flush && s.pending.size() < s.queue_depth) {
       return std::nullopt;  // the laser's transform may still come
     }
@@ -190,7 +191,8 @@ std::optional<ReadyScan> ScanInput::next(bool flush) {
       s.pending.pop_front();
       continue;
     }
-    ReadyScan ready{StampedScan{seconds(p.t_ns), pose_at(s.odometry, p.t_ns), *laser, p.scan},
+    ReadyScan ready{StampedScan{seconds(p.t_ns), pose_at(s.odometry, p.t_ns), laser->T_base_laser,
+                                laser->upside_down ? mirrored(p.scan) : p.scan},
                     p.t_ns, p.received};
     s.prune_odometry();  // while this scan still waits: it keeps the odometry around it
     s.pending.pop_front();

@@ -154,6 +154,64 @@ TEST(RobotBag, BagWithoutLaserScanIsAnInputError) {
   EXPECT_THAT(r.error().message, HasSubstr("run.bag: no sensor_msgs/LaserScan topic"));
 }
 
+// A laser mounted upside down (here turned by pi about its y axis: hung under a plate, facing
+// backwards) sees the room mirrored: beam b at angle a points at pi - a in the robot frame, not at
+// pi + a as the upright laser turned by pi does. The scan is read mirrored, so that its points land
+// where the beams went.
+TEST(RobotBag, AnUpsideDownLaserIsReadMirrored) {
+  const support::SyntheticRun upright_run = support::synthetic_run(RosEncoding::kRos1, 5, 36);
+  support::SyntheticRun flipped_run = upright_run;
+  TfMessage statics;
+  statics.transforms.push_back({{support::kSyntheticStartNs, "base_footprint"}, "base_link", {}});
+  statics.transforms.push_back({{support::kSyntheticStartNs, "base_link"},
+                                "base_laser_link",
+                                {support::kSyntheticLaserX, 0.0, 0.2, 0.0, 1.0, 0.0, 0.0}});
+  ASSERT_EQ(flipped_run.messages[0].topic, 3u);  // the /tf_static message
+  flipped_run.messages[0].data = support::encode_tf_message(statics, RosEncoding::kRos1);
+  Result<RobotBag> upright = convert(upright_run);
+  Result<RobotBag> flipped = convert(flipped_run);
+  ASSERT_TRUE(upright.ok()) << upright.error().message;
+  ASSERT_TRUE(flipped.ok()) << flipped.error().message;
+  ASSERT_EQ(flipped->log.scans.size(), upright->log.scans.size());
+  for (std::size_t k = 0; k < upright->log.scans.size(); ++k) {
+    const RangeScan& sent = upright->log.scans[k].scan;  // the ranges as the laser sent them
+    const StampedScan& read = flipped->log.scans[k];
+    EXPECT_NEAR(std::abs(read.laser_in_robot.theta), std::numbers::pi, 1e-12);
+    const std::size_t n = sent.ranges_m.size();
+    ASSERT_EQ(read.scan.ranges_m.size(), n);
+    for (std::size_t b = 0; b < n; ++b) {
+      const double a = sent.angle_min_rad + sent.angle_increment_rad * static_cast<double>(b);
+      const double r = sent.ranges_m[b];
+      const Vec2 went{support::kSyntheticLaserX + r * std::cos(std::numbers::pi - a),
+                      r * std::sin(std::numbers::pi - a)};
+      const std::size_t i = n - 1 - b;  // the beams come in reverse order
+      const double angle =
+          read.scan.angle_min_rad + read.scan.angle_increment_rad * static_cast<double>(i);
+      const Vec2 landed = read.laser_in_robot * Vec2{read.scan.ranges_m[i] * std::cos(angle),
+                                                     read.scan.ranges_m[i] * std::sin(angle)};
+      EXPECT_NEAR(landed.x, went.x, 1e-6) << "scan " << k << " beam " << b;
+      EXPECT_NEAR(landed.y, went.y, 1e-6) << "scan " << k << " beam " << b;
+    }
+  }
+}
+
+TEST(TfTree, APlanarLaserIsUpsideDownWhenItsZAxisPointsDown) {
+  const double s = std::sin(0.5 * 0.17), c = std::cos(0.5 * 0.17);
+  // {x, y, z, qx, qy, qz, qw}: upright, turned by pi, tilted by 10 degrees, rolled and pitched by
+  // pi.
+  EXPECT_FALSE(planar_laser({0.1, 0, 0, 0, 0, 0, 1}).upside_down);
+  EXPECT_FALSE(planar_laser({0.1, 0, 0, 0, 0, 1, 0}).upside_down);
+  EXPECT_FALSE(planar_laser({0.1, 0, 0, 0, s, 0, c}).upside_down);
+  const PlanarLaser rolled = planar_laser({0.1, 0.2, 0.3, 1, 0, 0, 0});
+  EXPECT_TRUE(rolled.upside_down);
+  EXPECT_NEAR(rolled.T_base_laser.x, 0.1, 1e-12);
+  EXPECT_NEAR(rolled.T_base_laser.y, 0.2, 1e-12);
+  EXPECT_NEAR(rolled.T_base_laser.theta, 0.0, 1e-12);  // its x axis still points forward
+  const PlanarLaser pitched = planar_laser({0, 0, 0, 0, 1, 0, 0});
+  EXPECT_TRUE(pitched.upside_down);
+  EXPECT_NEAR(std::abs(pitched.T_base_laser.theta), std::numbers::pi, 1e-12);
+}
+
 TEST(TfTree, DynamicEdgesInterpolateAndStaticOnesWinOverOlderStatics) {
   TfTree tf;
   tf.add({{0, "/odom"}, "base", {0, 0, 0, 0, 0, 0, 1}}, false);

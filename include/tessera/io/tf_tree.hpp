@@ -19,6 +19,16 @@ namespace tessera {
 /// The planar part of a 3D transform: x, y and the yaw (rotation about z) of the quaternion.
 [[nodiscard]] Pose2 planar_pose(const RosTransform& T);
 
+/// A 2D laser's pose as the planar pipeline takes it (T_base_laser): its planar pose, and whether
+/// it is mounted upside down (its z axis points down, as a laser hung under a plate: seen from
+/// above, its beams turn clockwise, so its scans are taken mirrored, range_scan.hpp's mirrored()).
+/// The yaw is the heading of the laser's x axis either way.
+struct PlanarLaser {
+  Pose2 T_base_laser;
+  bool upside_down = false;
+};
+[[nodiscard]] PlanarLaser planar_laser(const RosTransform& T_base_laser);
+
 /// "base_link" for "/base_link" and "base_link".
 [[nodiscard]] std::string_view tf_frame_name(std::string_view frame);
 

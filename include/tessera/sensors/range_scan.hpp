@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <vector>
 
 namespace tessera {
@@ -12,5 +13,18 @@ struct RangeScan {
   double max_range_m = 0.0;
   std::vector<double> ranges_m;
 };
+
+/// The same scan in the sensor frame mirrored across its x axis (y -> -y), the frame of an
+/// upside-down sensor seen from above: beam angles change sign, so the beams come in reverse
+/// order from -(last angle). Mirroring twice gives the scan back.
+[[nodiscard]] inline RangeScan mirrored(RangeScan scan) {
+  const double last_rad =
+      scan.angle_min_rad +
+      scan.angle_increment_rad *
+          static_cast<double>(scan.ranges_m.empty() ? 0 : scan.ranges_m.size() - 1);
+  scan.angle_min_rad = -last_rad;
+  std::reverse(scan.ranges_m.begin(), scan.ranges_m.end());
+  return scan;
+}
 
 }  // namespace tessera

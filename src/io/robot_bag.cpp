@@ -92,6 +92,13 @@ Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_read
     if (!valid) ++no_return_readings;
     scan.ranges_m.push_back(valid ? static_cast<double>(r) : scan.max_range_m);
   }
+  // A driver that sweeps clockwise sends a negative angle_increment; tessera's scans turn
+  // counter-clockwise, so the same beams are put in that order.
+  if (scan.angle_increment_rad < 0.0 && !scan.ranges_m.empty()) {
+    scan.angle_min_rad += scan.angle_increment_rad * static_cast<double>(scan.ranges_m.size() - 1);
+    scan.angle_increment_rad = -scan.angle_increment_rad;
+    std::reverse(scan.ranges_m.begin(), scan.ranges_m.end());
+  }
   return scan;
 }
 

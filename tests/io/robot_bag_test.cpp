@@ -63,6 +63,31 @@ TEST(RobotBag, OutOfRangeReadingsBecomeNoReturns) {
   EXPECT_NEAR(scan.angle_min_rad, -std::numbers::pi, 1e-6);
 }
 
+// Some drivers sweep clockwise: angle_increment < 0. The beams come back counter-clockwise, each
+// still pointing where it pointed.
+TEST(RobotBag, AClockwiseScanComesBackCounterClockwise) {
+  LaserScanMessage m;
+  m.angle_min_rad = 1.0F;
+  m.angle_increment_rad = -0.25F;
+  m.range_min_m = 0.1F;
+  m.range_max_m = 10.0F;
+  m.ranges_m = {1.0F, 2.0F, std::numeric_limits<float>::infinity(), 4.0F, 5.0F};
+  int no_return = 0;
+  const Result<RangeScan> scan = range_scan_of(m, no_return);
+  ASSERT_TRUE(scan.ok()) << scan.error().message;
+  EXPECT_EQ(no_return, 1);
+  EXPECT_NEAR(scan->angle_increment_rad, 0.25, 1e-12);
+  EXPECT_NEAR(scan->angle_min_rad, 0.0, 1e-12);
+  ASSERT_EQ(scan->ranges_m.size(), 5u);
+  for (std::size_t b = 0; b < 5; ++b) {
+    const double sent_at = 1.0 - 0.25 * static_cast<double>(b);
+    const std::size_t i = 4 - b;
+    EXPECT_NEAR(scan->angle_min_rad + scan->angle_increment_rad * static_cast<double>(i), sent_at,
+                1e-12);
+    EXPECT_EQ(scan->ranges_m[i], std::isfinite(m.ranges_m[b]) ? m.ranges_m[b] : 10.0);
+  }
+}
+
 TEST(RobotBag, DriverNoReadingConventionsAllBecomeNoReturns) {
   auto run = support::synthetic_run(RosEncoding::kCdr, 1, 10, /*with_tf=*/false);
   LaserScanMessage scan;

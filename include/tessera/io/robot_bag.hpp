@@ -49,7 +49,8 @@ struct RobotBag {
 /// The RangeScan of one sensor_msgs/LaserScan, as above: readings that are not a return become
 /// range_max and are counted in `no_return_readings`. kInput error (without a location: the caller
 /// names the file or topic) when angle_increment is 0 or not finite, angle_min is not finite or
-/// range_max is not > 0.
+/// range_max is not > 0. A clockwise scan (angle_increment < 0) comes back counter-clockwise: the
+/// same beams in reverse order.
 [[nodiscard]] Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_readings);
 
 /// Topics whose message bytes read_robot_bag needs: LaserScan, Odometry, and TFMessage on

@@ -18,7 +18,8 @@ void LaserInput::add_options(CLI::App& command) {
   command.add_option("--scan-topic", scan_topic,
                      "--bag: the sensor_msgs/LaserScan topic (needed when there are several)");
   command.add_option("--odom-topic", odom_topic,
-                     "--bag: the nav_msgs/Odometry topic (needed when there are several)");
+                     "--bag: the nav_msgs/Odometry topic (needed when there are several; without "
+                     "one, /tf's odom -> base is the odometry)");
   command.add_option("--base-frame", base_frame,
                      "--bag: the robot frame (default: the odometry's child_frame_id)");
   command

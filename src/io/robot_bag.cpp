@@ -118,17 +118,26 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
   Result<std::size_t> scan_topic =
       choose_topic(bag, file, kLaserScanType, options.scan_topic, "--scan-topic");
   if (!scan_topic) return scan_topic.error();
-  Result<std::size_t> odom_topic =
-      choose_topic(bag, file, kOdometryType, options.odom_topic, "--odom-topic");
-  if (!odom_topic) return odom_topic.error();
+  // The odometry: the Odometry topic, or in a bag that records none (and no --odom-topic names
+  // one) the moving tf edge above the laser, odom -> base as the base's driver publishes it on /tf.
+  std::optional<std::size_t> odom_topic;
+  if (!options.odom_topic.empty() ||
+      std::any_of(bag.topics.begin(), bag.topics.end(),
+                  [](const BagTopic& t) { return ros_type_is(t.type, kOdometryType); })) {
+    Result<std::size_t> chosen =
+        choose_topic(bag, file, kOdometryType, options.odom_topic, "--odom-topic");
+    if (!chosen) return chosen.error();
+    odom_topic = *chosen;
+  }
 
   RobotBag out;
   out.format = bag.format;
   const BagTopic& scans_t = bag.topics[*scan_topic];
-  const BagTopic& odom_t = bag.topics[*odom_topic];
   out.scan_topic = scans_t.name;
-  out.odom_topic = odom_t.name;
-  for (const BagTopic* t : {&scans_t, &odom_t}) {
+  out.odom_topic = odom_topic ? bag.topics[*odom_topic].name : "/tf";
+  std::vector<const BagTopic*> decoded = {&scans_t};
+  if (odom_topic) decoded.push_back(&bag.topics[*odom_topic]);
+  for (const BagTopic* t : decoded) {
     bool known = false;
     (void)encoding_of(*t, known);
     if (!known) {
@@ -153,7 +162,7 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
       Result<LaserScanMessage> s = decode_laser_scan(bag.bytes(m), encoding);
       if (!s) return input_error(at(file, t, n) + ": " + s.error().message);
       scans.emplace_back(m.log_time_ns, std::move(s).value());
-    } else if (m.topic == *odom_topic) {
+    } else if (odom_topic && m.topic == *odom_topic) {
       Result<OdometryMessage> o = decode_odometry(bag.bytes(m), encoding);
       if (!o) return input_error(at(file, t, n) + ": " + o.error().message);
       if (odom.empty()) {
@@ -169,7 +178,19 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     }
   }
   if (scans.empty()) return input_error(file + ": topic " + scans_t.name + " has no messages");
-  if (odom.empty()) return input_error(file + ": topic " + odom_t.name + " has no messages");
+  if (!odom_topic) {
+    const std::string laser(tf_frame_name(scans.front().second.header.frame_id));
+    std::optional<TfTree::MovingEdge> edge = tf.lowest_moving_edge(laser);
+    if (!edge) {
+      return input_error(file + ": no " + std::string(kOdometryType) +
+                         " topic, and no moving transform in /tf above the laser frame '" + laser +
+                         "' (SLAM on a bag needs odometry)");
+    }
+    out.odom_frame = edge->parent;
+    child_frame = edge->child;
+    for (const auto& [t_ns, T] : edge->T_parent_child) odom.push_back({t_ns, planar_pose(T)});
+  }
+  if (odom.empty()) return input_error(file + ": topic " + out.odom_topic + " has no messages");
   std::stable_sort(odom.begin(), odom.end(),
                    [](const PoseAtNs& a, const PoseAtNs& b) { return a.t_ns < b.t_ns; });
   out.base_frame =

@@ -145,6 +145,23 @@ Result<RosTransform> TfTree::lookup(std::string_view target_frame, std::string_v
                      std::string(source) + "'");
 }
 
+std::optional<TfTree::MovingEdge> TfTree::lowest_moving_edge(std::string_view frame) const {
+  std::string child(tf_frame_name(frame));
+  for (std::size_t depth = 0; depth <= edges_.size(); ++depth) {  // a cycle cannot loop forever
+    const auto it = edges_.find(child);
+    if (it == edges_.end()) return std::nullopt;
+    const Edge& e = it->second;
+    if (!e.is_static) {
+      MovingEdge out{e.parent, child, {}};
+      out.T_parent_child.reserve(e.samples.size());
+      for (const Sample& s : e.samples) out.T_parent_child.emplace_back(s.t_ns, s.T_parent_child);
+      return out;
+    }
+    child = e.parent;
+  }
+  return std::nullopt;
+}
+
 std::vector<std::string> TfTree::frames() const {
   std::set<std::string> all;
   for (const auto& [child, edge] : edges_) {

@@ -164,16 +164,20 @@ TEST(RobotBag, SeveralScanTopicsNeedAChoiceNamingThem) {
   EXPECT_THAT(wrong.error().message, HasSubstr("/odom is a nav_msgs/Odometry topic"));
 }
 
-TEST(RobotBag, BagWithoutLaserScanIsAnInputError) {
-  auto run = support::synthetic_run(RosEncoding::kRos1, 3, 36);
-  run.topics.erase(run.topics.begin());  // no /scan topic: shift the others down
+/// `run` without topic `index` and its messages (the later topics shift down).
+support::SyntheticRun without_topic(support::SyntheticRun run, std::size_t index) {
+  run.topics.erase(run.topics.begin() + static_cast<std::ptrdiff_t>(index));
   std::vector<support::MessageToWrite> kept;
   for (auto& m : run.messages) {
-    if (m.topic == 0) continue;
-    kept.push_back({m.topic - 1, m.t_ns, m.data});
+    if (m.topic == index) continue;
+    kept.push_back({m.topic > index ? m.topic - 1 : m.topic, m.t_ns, m.data});
   }
   run.messages = kept;
-  Result<RobotBag> r = convert(run);
+  return run;
+}
+
+TEST(RobotBag, BagWithoutLaserScanIsAnInputError) {
+  Result<RobotBag> r = convert(without_topic(support::synthetic_run(RosEncoding::kRos1, 3, 36), 0));
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error().kind, ErrorKind::kInput);
   EXPECT_THAT(r.error().message, HasSubstr("run.bag: no sensor_msgs/LaserScan topic"));
@@ -252,6 +256,55 @@ TEST(TfTree, DynamicEdgesInterpolateAndStaticOnesWinOverOlderStatics) {
   const Pose2 q = planar_pose(*tf.lookup("laser", "odom", 5));
   EXPECT_NEAR(q.x, 1.0, 1e-12);
   EXPECT_FALSE(tf.lookup("odom", "camera", 5).ok());
+}
+
+// A bag that records no nav_msgs/Odometry takes the odometry from /tf's odom -> base_footprint,
+// which the synthetic run publishes at the same stamps and values as /odom.
+TEST(RobotBag, WithoutAnOdometryTopicTheOdometryComesFromTf) {
+  const support::SyntheticRun run = support::synthetic_run(RosEncoding::kRos1, 6, 36);
+  ASSERT_EQ(run.topics[1].name, "/odom");
+  Result<RobotBag> with_odom = convert(run);
+  Result<RobotBag> from_tf = convert(without_topic(run, 1));
+  ASSERT_TRUE(with_odom.ok()) << with_odom.error().message;
+  ASSERT_TRUE(from_tf.ok()) << from_tf.error().message;
+  EXPECT_EQ(from_tf->odom_topic, "/tf");
+  EXPECT_EQ(from_tf->odom_frame, "odom");
+  EXPECT_EQ(from_tf->base_frame, "base_footprint");
+  ASSERT_EQ(from_tf->log.scans.size(), with_odom->log.scans.size());
+  for (std::size_t k = 0; k < from_tf->log.scans.size(); ++k) {
+    const Pose2& a = from_tf->log.scans[k].odometry;
+    const Pose2& b = with_odom->log.scans[k].odometry;
+    EXPECT_NEAR(a.x, b.x, 1e-9) << k;
+    EXPECT_NEAR(a.y, b.y, 1e-9) << k;
+    EXPECT_NEAR(a.theta, b.theta, 1e-9) << k;
+    EXPECT_NEAR(from_tf->log.scans[k].laser_in_robot.x, support::kSyntheticLaserX, 1e-12);
+  }
+  // Neither an Odometry topic nor a moving transform: the error says what is missing.
+  Result<RobotBag> none = convert(
+      without_topic(support::synthetic_run(RosEncoding::kRos1, 3, 36, /*with_tf=*/false), 1));
+  ASSERT_FALSE(none.ok());
+  EXPECT_EQ(none.error().kind, ErrorKind::kInput);
+  EXPECT_THAT(none.error().message,
+              HasSubstr("run.bag: no nav_msgs/Odometry topic, and no moving transform in /tf above "
+                        "the laser frame 'base_laser_link'"));
+}
+
+TEST(TfTree, TheLowestMovingEdgeAboveAFrameIsItsOdometry) {
+  TfTree tf;
+  tf.add({{0, "map"}, "odom", {0, 0, 0, 0, 0, 0, 1}}, false);
+  tf.add({{0, "odom"}, "base", {0, 0, 0, 0, 0, 0, 1}}, false);
+  tf.add({{10, "odom"}, "base", {1, 0, 0, 0, 0, 0, 1}}, false);
+  tf.add({{0, "base"}, "laser", {0.2, 0, 0, 0, 0, 0, 1}}, true);
+  const std::optional<TfTree::MovingEdge> e = tf.lowest_moving_edge("/laser");
+  ASSERT_TRUE(e.has_value());
+  EXPECT_EQ(e->parent, "odom");
+  EXPECT_EQ(e->child, "base");
+  ASSERT_EQ(e->T_parent_child.size(), 2u);
+  EXPECT_EQ(e->T_parent_child[1].first, 10);
+  EXPECT_EQ(e->T_parent_child[1].second.x_m, 1.0);
+  EXPECT_EQ(tf.lowest_moving_edge("odom")->parent, "map");
+  EXPECT_FALSE(tf.lowest_moving_edge("map").has_value());
+  EXPECT_FALSE(tf.lowest_moving_edge("camera").has_value());
 }
 
 // ---- The real Neato bags ----

@@ -5,7 +5,9 @@
 //   - odometry: T_odom_base from nav_msgs/Odometry interpolated at t_s between the odometry
 //     messages just before and after it (by header stamp; linear in x, y, shortest arc in theta;
 //     the nearer one outside their span). When the base frame is not the odometry's
-//     child_frame_id, T_child_base from tf is appended;
+//     child_frame_id, T_child_base from tf is appended. A bag without nav_msgs/Odometry takes
+//     its odometry from tf instead: the lowest moving edge above the laser frame (odom -> base,
+//     as a base driver publishes it on /tf; TfTree::lowest_moving_edge), its child the base;
 //   - laser_in_robot: T_base_laser from the tf tree (/tf_static and /tf) at t_s: the chain from
 //     the base frame to the scan's header.frame_id (e.g. base_footprint -> base_link ->
 //     base_laser_link). Never an option: a bag without that chain is an input error;
@@ -27,7 +29,8 @@ namespace tessera {
 struct RobotBagOptions {
   /// The LaserScan topic; empty: the bag's only sensor_msgs/LaserScan topic.
   std::string scan_topic;
-  /// The Odometry topic; empty: the bag's only nav_msgs/Odometry topic.
+  /// The Odometry topic; empty: the bag's only nav_msgs/Odometry topic, or /tf's odom -> base
+  /// when the bag has none.
   std::string odom_topic;
   /// The robot frame the laser pose and odometry refer to; empty: the odometry messages'
   /// child_frame_id.
@@ -39,8 +42,8 @@ struct RobotBag {
   LaserLog log;
   std::string format;      // RosBag::format
   std::string scan_topic;  // the topics and frames chosen
-  std::string odom_topic;
-  std::string odom_frame;  // the odometry's header.frame_id
+  std::string odom_topic;  // "/tf" when the odometry came from tf
+  std::string odom_frame;  // the odometry's header.frame_id (the tf edge's parent)
   std::string base_frame;
   std::string laser_frame;     // the scans' header.frame_id (the first scan's)
   int no_return_readings = 0;  // readings mapped to no-return

@@ -6,8 +6,10 @@
 // (ROS 1 bags of the tf1 era write "/base_link").
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "tessera/core/pose2.hpp"
@@ -44,6 +46,16 @@ class TfTree {
   /// transforms connects them. Cost: O(depth * log samples).
   [[nodiscard]] Result<RosTransform> lookup(std::string_view target, std::string_view source,
                                             std::int64_t t_ns) const;
+
+  /// The lowest moving (dynamic) edge at or above `frame`: going up from `frame`, the first edge
+  /// that /tf moves, with its samples T_parent_child in time order. In a robot's tf tree that is
+  /// odom -> base (the base driver's odometry; a localizer's map -> odom sits above it). Nullopt
+  /// when every edge up from `frame` is static, or `frame` is not in the tree.
+  struct MovingEdge {
+    std::string parent, child;
+    std::vector<std::pair<std::int64_t, RosTransform>> T_parent_child;  // (stamp ns, transform)
+  };
+  [[nodiscard]] std::optional<MovingEdge> lowest_moving_edge(std::string_view frame) const;
 
   /// Every frame that appears as a parent or a child, sorted (for error messages).
   [[nodiscard]] std::vector<std::string> frames() const;

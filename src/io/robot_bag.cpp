@@ -182,9 +182,12 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     const std::string laser(tf_frame_name(scans.front().second.header.frame_id));
     std::optional<TfTree::MovingEdge> edge = tf.lowest_moving_edge(laser);
     if (!edge) {
-      return input_error(file + ": no " + std::string(kOdometryType) +
-                         " topic, and no moving transform in /tf above the laser frame '" + laser +
-                         "' (SLAM on a bag needs odometry)");
+      std::string known;
+      for (const std::string& f : tf.frames()) known += (known.empty() ? "" : ", ") + f;
+      return input_error(
+          file + ": no " + std::string(kOdometryType) +
+          " topic, and no moving transform in /tf above the laser frame '" + laser +
+          "' (SLAM on a bag needs odometry; tf frames: " + (known.empty() ? "none" : known) + ")");
     }
     out.odom_frame = edge->parent;
     child_frame = edge->child;

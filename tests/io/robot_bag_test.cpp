@@ -400,5 +400,52 @@ TEST(RobotBagRealData, Ros1NeatoLaserPoseMatchesTfStatic) {
   expect_neato_bag(path, 404, 413, 0.0F, {"base_link", "base_laser_link"});
 }
 
+// The ROS 2 Neato's driver publishes its odometry both as /odom and as odom -> base_footprint on
+// /tf. Read as if the bag had no /odom, the odometry from tf is the same, scan for scan. The ROS 1
+// Neato bag's /tf holds only the robot's joints: without /odom it has no odometry, and says so.
+TEST(RobotBagRealData, OdometryFromTfIsWhereTheOdometryTopicPutsTheRobot) {
+  const auto path = support::data_path("bags/ros2_neato_finite_state_controller");
+  TESSERA_REQUIRE_DATA(path);
+  BagReadOptions read;
+  read.keep = robot_bag_needs;
+  Result<RosBag> bag = read_ros_bag(path, read);
+  ASSERT_TRUE(bag.ok()) << bag.error().message;
+  RobotBagOptions options;
+  options.scan_topic = "/scan";
+  Result<RobotBag> with_odom = robot_bag_from(*bag, path.string(), options);
+  ASSERT_TRUE(with_odom.ok()) << with_odom.error().message;
+  for (BagTopic& t : bag->topics) {
+    if (t.name == "/odom") t.type = "nav_msgs/NotRecorded";
+  }
+  Result<RobotBag> from_tf = robot_bag_from(*bag, path.string(), options);
+  ASSERT_TRUE(from_tf.ok()) << from_tf.error().message;
+  EXPECT_EQ(from_tf->odom_topic, "/tf");
+  EXPECT_EQ(from_tf->odom_frame, with_odom->odom_frame);
+  EXPECT_EQ(from_tf->base_frame, with_odom->base_frame);
+  ASSERT_EQ(from_tf->log.scans.size(), with_odom->log.scans.size());
+  double worst_m = 0.0, worst_rad = 0.0;
+  for (std::size_t k = 0; k < from_tf->log.scans.size(); ++k) {
+    const Pose2 d = between(with_odom->log.scans[k].odometry, from_tf->log.scans[k].odometry);
+    worst_m = std::max(worst_m, std::hypot(d.x, d.y));
+    worst_rad = std::max(worst_rad, std::abs(d.theta));
+  }
+  EXPECT_LT(worst_m, 1e-9);
+  EXPECT_LT(worst_rad, 1e-9);
+
+  const auto ros1 = support::data_path("bags/ros1_neato_drive_square_demo.bag");
+  TESSERA_REQUIRE_DATA(ros1);
+  Result<RosBag> ros1_bag = read_ros_bag(ros1, read);
+  ASSERT_TRUE(ros1_bag.ok()) << ros1_bag.error().message;
+  for (BagTopic& t : ros1_bag->topics) {
+    if (t.name == "/odom") t.type = "nav_msgs/NotRecorded";
+  }
+  Result<RobotBag> none = robot_bag_from(*ros1_bag, ros1.string(), options);
+  ASSERT_FALSE(none.ok());
+  EXPECT_EQ(none.error().kind, ErrorKind::kInput);
+  EXPECT_THAT(none.error().message,
+              HasSubstr("no moving transform in /tf above the laser frame 'base_laser_link' (SLAM "
+                        "on a bag needs odometry; tf frames: base_footprint, base_laser_link,"));
+}
+
 }  // namespace
 }  // namespace tessera

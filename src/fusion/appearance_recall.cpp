@@ -154,8 +154,8 @@ std::vector<LoopHypothesis> best_loop_hypotheses(std::span<const ImageDescriptio
     for (const int j : order) {
       const int most = static_cast<int>(size_of(j));
       if (most < h.score || most == 0) break;
-      if (most == h.score && j > h.candidate)
-        continue;  // at best a tie, which the lower index wins
+      // At best a tie, which the lower index wins.
+      if (most == h.score && j > h.candidate) continue;
       const PairScore s = verified(matched[static_cast<std::size_t>(j)], o);
       if (s.inliers > h.score || (s.inliers == h.score && s.inliers > 0 && j < h.candidate)) {
         h.candidate = j;

@@ -10,7 +10,8 @@
 //     as a base driver publishes it on /tf; TfTree::lowest_moving_edge), its child the base;
 //   - laser_in_robot: T_base_laser from the tf tree (/tf_static and /tf) at t_s: the chain from
 //     the base frame to the scan's header.frame_id (e.g. base_footprint -> base_link ->
-//     base_laser_link). Never an option: a bag without that chain is an input error;
+//     base_laser_link). Never an option: a bag without that chain is an input error. A laser
+//     mounted upside down (its z axis down) has its scan mirrored (tf_tree.hpp's planar_laser);
 //   - scan: angle_min, angle_increment, range_min and range_max of the message; readings that are
 //     not a return (inf, NaN, 0 or negative, below range_min, above range_max: what drivers write
 //     for "nothing seen") become range_max, RangeScan's no-return.

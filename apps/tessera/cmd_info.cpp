@@ -5,16 +5,18 @@
 
 #include "commands.hpp"
 #include "tessera/io/map_file.hpp"
+#include "tessera/io/robot_bag.hpp"
 #include "tessera/io/ros_bag.hpp"
 #include "tessera/io/session_file.hpp"
 
 namespace tessera::cli {
 
 InfoCommand::InfoCommand(CLI::App& app) {
-  sub_ = app.add_subcommand("info",
-                            "Describe a map file (format, size, resolution, cell counts), a ROS "
-                            "bag (topics, types, message counts, rates, duration) or a saved "
-                            "session (.tsm)");
+  sub_ =
+      app.add_subcommand("info",
+                         "Describe a map file (format, size, resolution, cell counts), a ROS "
+                         "bag (topics, types, message counts, rates, duration, and per laser "
+                         "scan topic what `slam --bag` takes from it) or a saved session (.tsm)");
   sub_->add_option("file", file_,
                    "Map file (any format tessera reads), ROS bag (.bag, .db3, .mcap or a "
                    "rosbag2 folder) or session (.tsm)")
@@ -24,11 +26,41 @@ InfoCommand::InfoCommand(CLI::App& app) {
   sub_->add_flag("--json", json_, "Print JSON instead of text");
 }
 
-/// Like `ros2 bag info`: the storage, the span, and per topic its type, count and rate.
+namespace {
+
+/// What `slam --bag --scan-topic TOPIC` would take from the bag (io/robot_bag.hpp): the laser
+/// and robot frames, the laser's pose on the robot, and where the odometry comes from; or why
+/// it cannot (no odometry, no tf chain to the laser).
+nlohmann::json laser_reading(const RosBag& bag, const std::string& file, const std::string& topic) {
+  RobotBagOptions options;
+  options.scan_topic = topic;
+  Result<RobotBag> r = robot_bag_from(bag, file, options);
+  if (!r) return {{"topic", topic}, {"error", r.error().message}};
+  const Pose2 T = r->log.scans.front().laser_in_robot;
+  return {{"topic", topic},
+          {"scans", r->log.scans.size()},
+          {"laser_frame", r->laser_frame},
+          {"base_frame", r->base_frame},
+          {"laser_in_robot_m_rad", {T.x, T.y, T.theta}},
+          {"odom_topic", r->odom_topic},
+          {"odom_frame", r->odom_frame}};
+}
+
+}  // namespace
+
+/// Like `ros2 bag info`: the storage, the span, and per topic its type, count and rate; then per
+/// LaserScan topic what `slam --bag` would take from it.
 int InfoCommand::run_bag() const {
-  Result<RosBag> read = read_ros_bag(file_);
+  BagReadOptions keep;
+  keep.keep = robot_bag_needs;
+  Result<RosBag> read = read_ros_bag(file_, keep);
   if (!read) return report_error(read.error());
   const RosBag& bag = *read;
+  nlohmann::json lasers = nlohmann::json::array();
+  for (const BagTopic& t : bag.topics) {
+    if (ros_type_is(t.type, kLaserScanType))
+      lasers.push_back(laser_reading(bag, file_.string(), t.name));
+  }
   nlohmann::json topics = nlohmann::json::array();
   for (const BagTopic& t : bag.topics) {
     topics.push_back({{"name", t.name},
@@ -48,7 +80,8 @@ int InfoCommand::run_bag() const {
                             {"start_s", 1e-9 * static_cast<double>(bag.start_ns())},
                             {"end_s", 1e-9 * static_cast<double>(bag.end_ns())},
                             {"duration_s", bag.duration_s()},
-                            {"topics", topics}};
+                            {"topics", topics},
+                            {"laser_scans", lasers}};
   if (json_) {
     fmt::print("{}\n", j.dump(2));
     return kExitOk;
@@ -67,6 +100,21 @@ int InfoCommand::run_bag() const {
   for (const BagTopic& t : bag.topics) {
     fmt::print("  {:<{}}  {:<{}}  {:>8}  {:>8.2f}  {}\n", t.name, name_w, t.type, type_w,
                t.message_count, t.rate_hz(), t.serialization);
+  }
+  for (const nlohmann::json& l : lasers) {
+    if (l.contains("error")) {
+      fmt::print("  slam --bag --scan-topic {}: {}\n", l["topic"].get<std::string>(),
+                 l["error"].get<std::string>());
+      continue;
+    }
+    const auto& T = l["laser_in_robot_m_rad"];
+    fmt::print(
+        "  slam --bag --scan-topic {}: {} scans from {} at ({:.3f} m, {:.3f} m, {:.3f} rad) in {}, "
+        "odometry from {} ({} -> {})\n",
+        l["topic"].get<std::string>(), l["scans"].get<std::size_t>(),
+        l["laser_frame"].get<std::string>(), T[0].get<double>(), T[1].get<double>(),
+        T[2].get<double>(), l["base_frame"].get<std::string>(), l["odom_topic"].get<std::string>(),
+        l["odom_frame"].get<std::string>(), l["base_frame"].get<std::string>());
   }
   return kExitOk;
 }

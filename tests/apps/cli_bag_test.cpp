@@ -36,6 +36,11 @@ TEST(CliBag, InfoListsTheRos2BagsTopicsAndCounts) {
   EXPECT_THAT(text.output,
               MatchesRegex("(.|\n)*/scan +sensor_msgs/msg/LaserScan +280 +4\\.43 +cdr(.|\n)*"));
   EXPECT_THAT(text.output, HasSubstr("3127 on 9 topics"));
+  // Per LaserScan topic, what `slam --bag` takes from it.
+  EXPECT_THAT(text.output,
+              HasSubstr("slam --bag --scan-topic /scan: 280 scans from base_laser_link at (-0.084 "
+                        "m, 0.000 m, -3.142 rad) in base_footprint, odometry from /odom (odom -> "
+                        "base_footprint)"));
   const support::CliRun json = run_cli("info --json " + oa.string());
   ASSERT_EQ(json.exit_code, 0) << json.output;
   EXPECT_EQ(json_counts(json.output), (std::map<std::string, int>{{"/scan", 153},
@@ -62,6 +67,21 @@ TEST(CliBag, InfoListsTheRos1NeatoBag) {
                                                                   {"/stable_scan", 405},
                                                                   {"/cmd_vel", 4360}}));
   EXPECT_EQ(nlohmann::json::parse(json.output)["format"], "ROS 1 bag 2.0");
+}
+
+// A bag of scans alone (laser_scan_matcher's demo: no odometry, no tf): info says why `slam --bag`
+// cannot map it.
+TEST(CliBag, InfoSaysWhatABagOfScansAloneLacks) {
+  const auto bag = support::data_path("bags/laser_scan_matcher_demo.bag");
+  TESSERA_REQUIRE_DATA(bag);
+  const support::CliRun json = run_cli("info --json " + bag.string());
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  const nlohmann::json lasers = nlohmann::json::parse(json.output)["laser_scans"];
+  ASSERT_EQ(lasers.size(), 1u);
+  EXPECT_EQ(lasers[0]["topic"], "/scan");
+  EXPECT_THAT(lasers[0]["error"].get<std::string>(),
+              HasSubstr("no nav_msgs/Odometry topic, and no moving transform in /tf above the "
+                        "laser frame 'laser'"));
 }
 
 TEST(CliBag, InfoOnALegacyBagSaysItIsFormat12) {

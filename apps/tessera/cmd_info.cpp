@@ -58,8 +58,9 @@ int InfoCommand::run_bag() const {
   const RosBag& bag = *read;
   nlohmann::json lasers = nlohmann::json::array();
   for (const BagTopic& t : bag.topics) {
-    if (ros_type_is(t.type, kLaserScanType))
+    if (ros_type_is(t.type, kLaserScanType)) {
       lasers.push_back(laser_reading(bag, file_.string(), t.name));
+    }
   }
   nlohmann::json topics = nlohmann::json::array();
   for (const BagTopic& t : bag.topics) {

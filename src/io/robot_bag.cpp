@@ -72,6 +72,13 @@ std::string at(const std::string& file, const BagTopic& t, std::size_t n) {
 
 double seconds(std::int64_t ns) { return 1e-9 * static_cast<double>(ns); }
 
+/// The tf tree's frames, comma-separated ("none" when empty), for error messages.
+std::string frame_list(const TfTree& tf) {
+  std::string known;
+  for (const std::string& f : tf.frames()) known += (known.empty() ? "" : ", ") + f;
+  return known.empty() ? "none" : known;
+}
+
 }  // namespace
 
 Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_readings) {
@@ -94,8 +101,8 @@ Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_read
   }
   // A driver that sweeps clockwise sends a negative angle_increment; tessera's scans turn
   // counter-clockwise, so the same beams are put in that order.
-  if (scan.angle_increment_rad < 0.0 && !scan.ranges_m.empty()) {
-    scan.angle_min_rad += scan.angle_increment_rad * static_cast<double>(scan.ranges_m.size() - 1);
+  if (scan.angle_increment_rad < 0.0) {
+    scan.angle_min_rad = last_angle_rad(scan);
     scan.angle_increment_rad = -scan.angle_increment_rad;
     std::reverse(scan.ranges_m.begin(), scan.ranges_m.end());
   }
@@ -182,12 +189,9 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     const std::string laser(tf_frame_name(scans.front().second.header.frame_id));
     std::optional<TfTree::MovingEdge> edge = tf.lowest_moving_edge(laser);
     if (!edge) {
-      std::string known;
-      for (const std::string& f : tf.frames()) known += (known.empty() ? "" : ", ") + f;
-      return input_error(
-          file + ": no " + std::string(kOdometryType) +
-          " topic, and no moving transform in /tf above the laser frame '" + laser +
-          "' (SLAM on a bag needs odometry; tf frames: " + (known.empty() ? "none" : known) + ")");
+      return input_error(file + ": no " + std::string(kOdometryType) +
+                         " topic, and no moving transform in /tf above the laser frame '" + laser +
+                         "' (SLAM on a bag needs odometry; tf frames: " + frame_list(tf) + ")");
     }
     out.odom_frame = edge->parent;
     child_frame = edge->child;
@@ -226,10 +230,8 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     if (laser != out.base_frame) {
       Result<RosTransform> T_base_laser = tf.lookup(out.base_frame, laser, stamp);
       if (!T_base_laser) {
-        std::string known;
-        for (const std::string& f : tf.frames()) known += (known.empty() ? "" : ", ") + f;
         return input_error(at(file, scans_t, i) + ": laser pose: " + T_base_laser.error().message +
-                           " (tf frames: " + (known.empty() ? "none" : known) + ")");
+                           " (tf frames: " + frame_list(tf) + ")");
       }
       const PlanarLaser placed = planar_laser(*T_base_laser);
       s.laser_in_robot = placed.T_base_laser;

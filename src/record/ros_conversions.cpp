@@ -75,8 +75,7 @@ LaserScanMessage laser_scan_message(const RangeScan& scan, std::int64_t stamp_ns
   const std::size_t n = scan.ranges_m.size();
   m.angle_min_rad = static_cast<float>(scan.angle_min_rad);
   m.angle_increment_rad = static_cast<float>(scan.angle_increment_rad);
-  m.angle_max_rad = static_cast<float>(
-      scan.angle_min_rad + scan.angle_increment_rad * static_cast<double>(n > 0 ? n - 1 : 0));
+  m.angle_max_rad = static_cast<float>(last_angle_rad(scan));
   m.range_min_m = static_cast<float>(scan.min_range_m);
   m.range_max_m = static_cast<float>(scan.max_range_m);
   m.ranges_m.reserve(n);

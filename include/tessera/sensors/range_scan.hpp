@@ -1,5 +1,6 @@
 #pragma once
 #include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace tessera {
@@ -14,15 +15,17 @@ struct RangeScan {
   std::vector<double> ranges_m;
 };
 
+/// The angle of the scan's last beam (angle_min_rad when it has none): LaserScan's angle_max.
+[[nodiscard]] inline double last_angle_rad(const RangeScan& scan) {
+  const std::size_t n = scan.ranges_m.size();
+  return scan.angle_min_rad + scan.angle_increment_rad * static_cast<double>(n > 0 ? n - 1 : 0);
+}
+
 /// The same scan in the sensor frame mirrored across its x axis (y -> -y), the frame of an
 /// upside-down sensor seen from above: beam angles change sign, so the beams come in reverse
 /// order from -(last angle). Mirroring twice gives the scan back.
 [[nodiscard]] inline RangeScan mirrored(RangeScan scan) {
-  const double last_rad =
-      scan.angle_min_rad +
-      scan.angle_increment_rad *
-          static_cast<double>(scan.ranges_m.empty() ? 0 : scan.ranges_m.size() - 1);
-  scan.angle_min_rad = -last_rad;
+  scan.angle_min_rad = -last_angle_rad(scan);
   std::reverse(scan.ranges_m.begin(), scan.ranges_m.end());
   return scan;
 }

@@ -26,12 +26,13 @@ std::vector<std::uint64_t> packed_rows(const Descriptors& d, int words) {
   return out;
 }
 
-// The distances of one query row to every train row. Compiled twice where the compiler can (x86-64
-// GCC): with the popcnt instruction, chosen at load time when the processor has it, and without.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-__attribute__((target_clones("popcnt", "default")))
+// The distances of one query row to every train row; always inlined, so that the popcnt copy
+// below has the instruction in its own loop.
+#if defined(__GNUC__)
+__attribute__((always_inline))
 #endif
-void hamming_row(const std::uint64_t* query, const std::uint64_t* train, int rows, int words,
+inline void
+hamming_row_body(const std::uint64_t* query, const std::uint64_t* train, int rows, int words,
                  float* out) {
   for (int j = 0; j < rows; ++j) {
     const std::uint64_t* t = train + static_cast<std::ptrdiff_t>(j) * words;
@@ -40,6 +41,32 @@ void hamming_row(const std::uint64_t* query, const std::uint64_t* train, int row
     out[j] = static_cast<float>(d);
   }
 }
+
+// On x86-64 GCC the loop is compiled a second time with the popcnt instruction, taken when the
+// processor has it. The choice is made here at run time, not by target_clones: its load-time
+// resolver (an ifunc) runs before ThreadSanitizer's runtime is up and crashes the program.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target("popcnt"))) void hamming_row_popcnt(const std::uint64_t* query,
+                                                          const std::uint64_t* train, int rows,
+                                                          int words, float* out) {
+  hamming_row_body(query, train, rows, words, out);
+}
+
+void hamming_row(const std::uint64_t* query, const std::uint64_t* train, int rows, int words,
+                 float* out) {
+  static const bool has_popcnt = __builtin_cpu_supports("popcnt");
+  if (has_popcnt) {
+    hamming_row_popcnt(query, train, rows, words, out);
+  } else {
+    hamming_row_body(query, train, rows, words, out);
+  }
+}
+#else
+void hamming_row(const std::uint64_t* query, const std::uint64_t* train, int rows, int words,
+                 float* out) {
+  hamming_row_body(query, train, rows, words, out);
+}
+#endif
 
 }  // namespace
 

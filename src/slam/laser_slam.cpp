@@ -83,6 +83,7 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
   if (auto p = validate(o.submaps)) return "submaps." + *p;
   if (auto p = validate(o.motion_filter)) return "motion_filter." + *p;
   if (auto p = validate(o.real_time)) return "real_time." + *p;
+  if (auto p = validate(o.real_time_without_odometry)) return "real_time_without_odometry." + *p;
   if (auto p = validate(o.refiner)) return "refiner." + *p;
   if (auto p = validate(o.loop_closer)) return "loop_closer." + *p;
   if (!(o.loop_min_overlap >= 0.0 && o.loop_min_overlap <= 1.0)) {
@@ -186,6 +187,8 @@ struct LaserSlam::Impl {
   Pose2 last_odometry;
   Pose2 last_T_local;
   double last_t_s = 0.0;
+  /// The last scan's step from the one before it (use_odometry off).
+  Pose2 last_step;
   /// start_trajectory's pose for the next scan, and the id of the first submap of the current
   /// trajectory (submaps of different trajectories are not joined by the path).
   // (A flag and a plain pose: see MotionFilter on GCC 12's false maybe-uninitialized.)
@@ -468,28 +471,19 @@ struct LaserSlam::Impl {
     // first scan of a new trajectory is where start_trajectory() put it, in the local frame as
     // the graph now places it.
     const bool starts_trajectory = has_pending_start;
-    Pose2 T_local = scan.odometry;
+    Pose2 T_local = options.use_odometry ? scan.odometry : Pose2{};
     if (starts_trajectory) {
       T_local = local_to_global().inverse() * pending_start;
       has_pending_start = false;
     } else if (scan_index > 0) {
       if (scan.t_s < last_t_s) ++stats.backward_stamps;
-      T_local = last_T_local * between(last_odometry, scan.odometry);
+      T_local = options.use_odometry ? last_T_local * between(last_odometry, scan.odometry)
+                                     : last_T_local * last_step;
     }
-    if (const std::optional<int> id = submaps.matching_id(); id && !matching.empty()) {
-      const Submap& submap = submaps.submap(*id);
-      const Pose2 prior = between(submap.local_pose(), T_local);
-      Pose2 start = prior;
-      if (options.real_time_search) {
-        start = match_real_time(submap.grid(), prior, matching, options.real_time).T_grid_robot;
-      }
-      const RefinedPose refined =
-          refine_scan(submap.grid(), prior, start, matching, options.refiner,
-                      manhattan_heading(wall, submap, start));
-      T_local = submap.local_pose() * refined.T_grid_robot;
-    }
+    T_local = matched_in_submap(T_local, matching, wall);
     if (wall && !axis_local_rad) axis_local_rad = T_local.theta + wall->angle_rad;
     last_odometry = scan.odometry;
+    last_step = starts_trajectory || scan_index == 0 ? Pose2{} : between(last_T_local, T_local);
     last_T_local = T_local;
     last_t_s = scan.t_s;
 
@@ -574,6 +568,33 @@ struct LaserSlam::Impl {
     }
     report(scan_index + 1, scans_total);
     return Ok{};
+  }
+
+  /// Local SLAM's match (Hess et al. 2016 Sec. IV): the scan searched around its prediction
+  /// T_local in the matching submap, then refined; the prediction itself when there is no submap
+  /// yet or no point to match.
+  Pose2 matched_in_submap(const Pose2& T_local, const std::vector<Vec2>& matching,
+                          const std::optional<WallDirection>& wall) {
+    const std::optional<int> id = submaps.matching_id();
+    if (!id || matching.empty()) return T_local;
+    const Submap& submap = submaps.submap(*id);
+    const Pose2 predicted = between(submap.local_pose(), T_local);
+    Pose2 start = predicted;
+    if (options.real_time_search) {
+      start = match_real_time(
+                  submap.grid(), predicted, matching,
+                  options.use_odometry ? options.real_time : options.real_time_without_odometry)
+                  .T_grid_robot;
+    }
+    // Without odometry the refinement is tied to the predicted position but to the searched
+    // heading (Cartographer's local matching does the same): the constant-velocity guess holds
+    // along a corridor, where the walls do not say where the robot is, but a turn's rate
+    // changes from scan to scan (decision 0034).
+    const Pose2 prior =
+        options.use_odometry ? predicted : Pose2{predicted.x, predicted.y, start.theta};
+    const RefinedPose refined = refine_scan(submap.grid(), prior, start, matching, options.refiner,
+                                            manhattan_heading(wall, submap, start));
+    return submap.local_pose() * refined.T_grid_robot;
   }
 
   /// The scan's dominant wall direction when options.manhattan (wall_direction.hpp).

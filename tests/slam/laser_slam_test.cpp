@@ -10,7 +10,9 @@
 #include "laser_test_world.hpp"
 #include "support/data.hpp"
 #include "tessera/core/angle.hpp"
+#include "tessera/core/rng.hpp"
 #include "tessera/eval/relation_metric.hpp"
+#include "tessera/eval/trajectory_error.hpp"
 #include "tessera/io/carmen_log.hpp"
 #include "tessera/io/relations_file.hpp"
 #include "tessera/sim/builtin_world.hpp"
@@ -82,6 +84,39 @@ TEST(LaserSlam, SimulatedLoopEndsFarCloserToTheTruthThanOdometry) {
   EXPECT_GT(r->map.known_count(), 1000u);
   for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
     ASSERT_EQ(r->trajectory[i].t_s, run.log.scans[i].t_s);
+  }
+}
+
+// A log without odometry (a bag of scans alone): with use_odometry off the scans alone carry the
+// robot round the office and the loop closes; what the scans' odometry fields hold is not read
+// (here: poses scattered metres apart).
+TEST(LaserSlam, WithoutOdometryTheScansAloneFollowTheRobot) {
+  const SimulatedLaserRun& run = office_run();
+  LaserLog log = run.log;
+  Rng scatter(5);
+  for (StampedScan& s : log.scans) {
+    s.odometry =
+        Pose2{scatter.uniform(-3.0, 3.0), scatter.uniform(-3.0, 3.0), scatter.uniform(-3.0, 3.0)};
+  }
+  LaserSlamOptions options = small_submaps();
+  options.use_odometry = false;
+  Result<LaserSlamResult> r = run_laser_slam(log, options);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  Result<AbsoluteTrajectoryError> ate = absolute_trajectory_error(r->trajectory, run.truth);
+  ASSERT_TRUE(ate.ok()) << ate.error().message;
+  std::printf("without odometry: ATE %.3f m over %zu scans, %d loop closures\n", ate->trans_m.rmse,
+              ate->trans_m.count, r->stats.loop_closures);
+  EXPECT_EQ(ate->trans_m.count, run.truth.size());
+  EXPECT_LT(ate->trans_m.rmse, 0.1);
+  EXPECT_GT(r->stats.loop_closures, 0);
+
+  // The scattered poses were not read: the run on the simulator's own odometry is the same run.
+  Result<LaserSlamResult> clean = run_laser_slam(run.log, options);
+  ASSERT_TRUE(clean.ok()) << clean.error().message;
+  ASSERT_EQ(clean->trajectory.size(), r->trajectory.size());
+  for (std::size_t i = 0; i < r->trajectory.size(); ++i) {
+    ASSERT_EQ(clean->trajectory[i].pose.x, r->trajectory[i].pose.x) << i;
+    ASSERT_EQ(clean->trajectory[i].pose.theta, r->trajectory[i].pose.theta) << i;
   }
 }
 

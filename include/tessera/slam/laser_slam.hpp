@@ -71,6 +71,16 @@ struct LaserSlamOptions {
   /// Correlative search before refinement (Olson 2009); off: refine from the odometry prior alone.
   bool real_time_search = true;
   RealTimeMatcherOptions real_time;
+  /// false: the scans carry no odometry (a bag of scans alone, or odometry not to be trusted) and
+  /// their `odometry` is ignored. Each scan is then predicted one more step of the last scan's
+  /// motion on (constant velocity per scan, in file order: stamps are not used, as real logs'
+  /// jitter and step back), searched in the wider real_time_without_odometry window, and refined
+  /// with its position tied to the prediction and its heading to the search's result. This
+  /// needs the scans to come faster than the motion changes: the window holds a change of 0.3 m
+  /// and 0.5 rad per scan (docs/bags.md, "Scans alone").
+  bool use_odometry = true;
+  RealTimeMatcherOptions real_time_without_odometry{.linear_window_m = 0.3,
+                                                    .angular_window_rad = 0.5};
   /// Refinement after the search: weak ties to the odometry prediction, 3/m in translation and
   /// 5/rad in heading. Decision 0007 had 10/m and 0 (40 spiralled the Intel map); with scans a
   /// metre apart both were wrong (decision 0013). A heading left free slides into the wrong

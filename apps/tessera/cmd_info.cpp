@@ -109,13 +109,17 @@ int InfoCommand::run_bag() const {
       continue;
     }
     const auto& T = l["laser_in_robot_m_rad"];
+    const std::string odometry =
+        l["odom_topic"].get<std::string>().empty()
+            ? std::string("no odometry (the scans alone are matched)")
+            : fmt::format("odometry from {} ({} -> {})", l["odom_topic"].get<std::string>(),
+                          l["odom_frame"].get<std::string>(), l["base_frame"].get<std::string>());
     fmt::print(
-        "  slam --bag --scan-topic {}: {} scans from {} at ({:.3f} m, {:.3f} m, {:.3f} rad) in {}, "
-        "odometry from {} ({} -> {})\n",
+        "  slam --bag --scan-topic {}: {} scans from {} at ({:.3f} m, {:.3f} m, {:.3f} rad) "
+        "in {}, {}\n",
         l["topic"].get<std::string>(), l["scans"].get<std::size_t>(),
         l["laser_frame"].get<std::string>(), T[0].get<double>(), T[1].get<double>(),
-        T[2].get<double>(), l["base_frame"].get<std::string>(), l["odom_topic"].get<std::string>(),
-        l["odom_frame"].get<std::string>(), l["base_frame"].get<std::string>());
+        T[2].get<double>(), l["base_frame"].get<std::string>(), odometry);
   }
   return kExitOk;
 }

@@ -57,7 +57,7 @@ LocalizeCommand::LocalizeCommand(CLI::App& app) {
       "--out");
   sub_->add_option("--session", session_, "Session file (.tsm) whose map to localize in")
       ->required();
-  input_.add_options(*sub_);
+  input_.add_options(*sub_, /*with_no_odometry=*/false);
   sub_->add_option("--initial-pose", initial_pose_,
                    "X,Y[,THETA] (m, m, rad) of the first scan in the map (default: search)");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
@@ -81,6 +81,12 @@ int LocalizeCommand::run() const {
   const Session& session = setup->session;
   Result<LaserLog> log = input_.read(nullptr);
   if (!log) return report_error(log.error());
+  if (!log->has_odometry) {
+    return report_error(
+        input_error(input_.name() +
+                    ": it has no odometry, and localize follows the robot between scans by "
+                    "its odometry (slam --bag maps such a bag from its scans alone)"));
+  }
   if (Status s = check_same_laser(session, *log, session_.string(), input_.name()); !s) {
     return report_error(s.error());
   }

@@ -27,6 +27,7 @@ nlohmann::json session_json(const std::filesystem::path& file, const Session& s)
           {"format_version", s.format_version},
           {"tessera_version", s.tessera_version},
           {"command", s.command},
+          {"settings_yaml", s.options_yaml},
           {"scans", s.scans.size()},
           {"trajectories",
            s.trajectory_starts.size() +

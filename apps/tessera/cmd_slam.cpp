@@ -12,12 +12,9 @@
 #include "recording.hpp"
 #include "slam_live.hpp"
 #include "slam_report.hpp"
-#include "tessera/core/angle.hpp"
 #include "tessera/eval/drift_correction.hpp"
 #include "tessera/eval/map_accuracy.hpp"
 #include "tessera/eval/relation_metric.hpp"
-#include "tessera/io/atomic_file.hpp"
-#include "tessera/io/g2o_file.hpp"
 #include "tessera/io/json_file.hpp"
 #include "tessera/io/map_yaml.hpp"
 #include "tessera/io/relations_file.hpp"
@@ -38,7 +35,7 @@ SlamCommand::SlamCommand(CLI::App& app) {
       "laser log (--log), or on a simulated run in a world (--world / --builtin) scored against "
       "its ground truth; writes map.yaml + map.pgm, map.png, trajectory.txt (one pose per scan), "
       "graph.g2o and report.json to --out");
-  input_.add_options(*sub_);
+  input_.add_options(*sub_, /*with_no_odometry=*/true);
   add_world_options(*sub_, world_);
   sub_->add_option("--seed", seed_, "Simulated run: seed of the start, odometry and range noise")
       ->capture_default_str();
@@ -96,6 +93,7 @@ int SlamCommand::run() const {
     Result<LaserLog> read = input_.read(&bag_report);
     if (!read) return report_error(read.error());
     read_log = std::move(read).value();
+    options.use_odometry = read_log->has_odometry;
   } else {
     Result<World> loaded = load_world(world_, 0.05);
     if (!loaded) return report_error(loaded.error());
@@ -145,8 +143,8 @@ int SlamCommand::run() const {
                   p.scans_done, p.scans_total, "scans");
   };
   const auto t0 = std::chrono::steady_clock::now();
-  Result<slam::LaserSlamResult> result = run_laser_slam_served(
-      log, starts, options, *recording, autosaver(log, starts, options.loop_closure));
+  Result<slam::LaserSlamResult> result =
+      run_laser_slam_served(log, starts, options, *recording, autosaver(log, starts, options));
   progress.finish();
   const double wall_s = seconds_since(t0);
   if (!result) {
@@ -212,9 +210,9 @@ int SlamCommand::run() const {
       !s) {
     return report_error(s.error());
   }
-  if (Status s = *trimmed ? save_session((*trimmed)->log.scans, (*trimmed)->trim.starts,
-                                         options.loop_closure, (*trimmed)->result)
-                          : save_session(log.scans, starts, options.loop_closure, r);
+  if (Status s = *trimmed ? save_session((*trimmed)->log.scans, (*trimmed)->trim.starts, options,
+                                         (*trimmed)->result)
+                          : save_session(log.scans, starts, options, r);
       !s) {
     return report_error(s.error());
   }

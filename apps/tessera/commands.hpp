@@ -226,15 +226,17 @@ class SlamCommand : public Command {
   /// without --save.
   [[nodiscard]] Status check_session_options() const;
   /// Writes the session of `scans` (the trajectories that start among them) and `r` to --save;
-  /// `loop_closure` is the run's (a resumed run takes the session's, whatever its flags).
+  /// `options` are the run's (loop closure and odometry: a resumed run takes the session's,
+  /// whatever its flags; odometry is off also for a log that has none).
   [[nodiscard]] Status save_session(const std::vector<StampedScan>& scans,
                                     const std::vector<slam::TrajectoryStart>& starts,
-                                    bool loop_closure, const slam::LaserSlamResult& r) const;
+                                    const slam::LaserSlamOptions& options,
+                                    const slam::LaserSlamResult& r) const;
   /// --autosave-s: saves the session so far every that many seconds of the log's data (not
   /// while a resumed session's own scans are replayed); empty without it.
   [[nodiscard]] slam::AfterScan autosaver(const LaserLog& log,
                                           const std::vector<slam::TrajectoryStart>& starts,
-                                          bool loop_closure) const;
+                                          const slam::LaserSlamOptions& options) const;
   double autosave_s_ = 0.0;
   /// The resumed session's scans with `log` after them as a new trajectory, started where the
   /// session's map places the log (--initial-pose, or found by relocalization), and the

@@ -10,7 +10,7 @@
 
 namespace tessera::cli {
 
-void LaserInput::add_options(CLI::App& command) {
+void LaserInput::add_options(CLI::App& command, bool with_no_odometry) {
   command.add_option("--log", log, "Laser log: CARMEN .clf/.log (FLASER, ROBOTLASER1, RAWLASER1)");
   command.add_option("--bag", bag,
                      "ROS bag: a ROS 1 .bag, a rosbag2 folder, a .db3 or an .mcap file (LaserScan, "
@@ -22,6 +22,11 @@ void LaserInput::add_options(CLI::App& command) {
                      "one, /tf's odom -> base is the odometry)");
   command.add_option("--base-frame", base_frame,
                      "--bag: the robot frame (default: the odometry's child_frame_id)");
+  if (with_no_odometry) {
+    command.add_flag("--no-odometry", no_odometry,
+                     "Ignore the log's odometry: match the scans alone (for odometry that cannot "
+                     "be trusted; a bag without odometry is read so anyway)");
+  }
   command
       .add_option("--from-s", from_s,
                   "Use the scans from this many seconds after the first one (--log, --bag)")
@@ -42,6 +47,7 @@ Status LaserInput::check() const {
     return usage_error("--scan-topic, --odom-topic and --base-frame need --bag");
   }
   if (!given() && (from_s || to_s)) return usage_error("--from-s and --to-s cut a --log or --bag");
+  if (!given() && no_odometry) return usage_error("--no-odometry is about a --log or --bag");
   return check_window(from_s, to_s);
 }
 
@@ -58,7 +64,14 @@ Result<LaserLog> LaserInput::read(nlohmann::json* bag_report) const {
     out = std::move(read->log);
   }
   if (Status s = cut_to_window(out, from_s, to_s, name()); !s) return s.error();
+  if (no_odometry) without_odometry(out);
   return out;
+}
+
+void without_odometry(LaserLog& log) {
+  log.has_odometry = false;
+  log.odometry.clear();
+  for (StampedScan& s : log.scans) s.odometry = Pose2{};
 }
 
 Status check_window(std::optional<double> from_s, std::optional<double> to_s) {

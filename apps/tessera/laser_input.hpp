@@ -21,8 +21,10 @@ struct LaserInput {
   std::string base_frame;  // --bag: empty is the odometry's child frame
   std::optional<double> from_s;
   std::optional<double> to_s;
+  bool no_odometry = false;  // --no-odometry: read the log as if it recorded none
 
-  void add_options(CLI::App& command);
+  /// with_no_odometry: also --no-odometry (slam maps from scans alone; localize cannot).
+  void add_options(CLI::App& command, bool with_no_odometry);
   [[nodiscard]] bool given() const { return log || bag; }
   /// The file read.
   [[nodiscard]] std::string name() const;
@@ -30,9 +32,13 @@ struct LaserInput {
   /// empty window).
   [[nodiscard]] Status check() const;
   /// Reads the input and cuts it to the window; `bag_report` (may be null) gets a bag's topics
-  /// and frames. Input error when the window holds no scan.
+  /// and frames. Input error when the window holds no scan. With no_odometry the log comes back
+  /// without odometry (LaserLog::has_odometry false, every scan's odometry the identity).
   [[nodiscard]] Result<LaserLog> read(nlohmann::json* bag_report) const;
 };
+
+/// The log as if it recorded no odometry (--no-odometry).
+void without_odometry(LaserLog& log);
 
 /// Usage error when a window's --from-s is not before its --to-s.
 [[nodiscard]] Status check_window(std::optional<double> from_s, std::optional<double> to_s);

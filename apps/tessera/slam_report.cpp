@@ -36,6 +36,7 @@ nlohmann::json slam_options_json(const slam::LaserSlamOptions& options,
                                  const std::string& input_kind, const std::string& input_name) {
   return {{input_kind, input_name},
           {"loop_closure", options.loop_closure},
+          {"use_odometry", options.use_odometry},
           {"manhattan", options.manhattan},
           {"manhattan_sigma_rad", options.manhattan_sigma_rad},
           {"manhattan_rotation_weight", options.manhattan_rotation_weight},

@@ -22,9 +22,10 @@ namespace {
 
 // The run's settings as a session keeps them: --print-config's YAML without the settings of
 // where the run wrote and showed its outputs, which are not the session's (a session saved from
-// another folder is the same session). Loop closure is the run's: a resumed run keeps the
-// session's, whether or not its own command line repeats --no-loop-closure.
-std::string session_options_yaml(const CLI::App& command, bool loop_closure) {
+// another folder is the same session). Loop closure and odometry are the run's: a resumed run
+// keeps the session's, whether or not its own command line repeats --no-loop-closure, and a log
+// without odometry is mapped without, whether or not --no-odometry says so.
+std::string session_options_yaml(const CLI::App& command, const slam::LaserSlamOptions& options) {
   static const std::set<std::string, std::less<>> kNotTheSessions = {
       "out",   "save",          "autosave_s",   "resume",        "initial_pose", "record",
       "serve", "serve_address", "serve_linger", "step_delay_ms", "quiet"};
@@ -34,9 +35,12 @@ std::string session_options_yaml(const CLI::App& command, bool loop_closure) {
     std::string_view key = line;
     if (key.starts_with("# ")) key.remove_prefix(2);
     key = key.substr(0, key.find(':'));
-    if (!kNotTheSessions.contains(key) && key != "no_loop_closure") out += line + "\n";
+    if (!kNotTheSessions.contains(key) && key != "no_loop_closure" && key != "no_odometry") {
+      out += line + "\n";
+    }
   }
-  out += loop_closure ? "# no_loop_closure: ~  (unset)\n" : "no_loop_closure: true\n";
+  out += options.loop_closure ? "# no_loop_closure: ~  (unset)\n" : "no_loop_closure: true\n";
+  out += options.use_odometry ? "# no_odometry: ~  (unset)\n" : "no_odometry: true\n";
   return out;
 }
 
@@ -82,13 +86,13 @@ Status SlamCommand::check_session_options() const {
 
 slam::AfterScan SlamCommand::autosaver(const LaserLog& log,
                                        const std::vector<slam::TrajectoryStart>& starts,
-                                       bool loop_closure) const {
+                                       const slam::LaserSlamOptions& options) const {
   if (!save_ || autosave_s_ <= 0.0) return {};
   // Data time counts forward steps between consecutive scans of a trajectory (a resumed log's
   // stamps may start anywhere). A resumed session's own scans are replayed, not new: saving
   // part of them over the file they came from would lose the rest.
   const int first_new = resume_ ? starts.back().first_scan : 0;
-  return [this, &log, &starts, first_new, loop_closure, since_save_s = 0.0](
+  return [this, &log, &starts, first_new, &options, since_save_s = 0.0](
              const slam::LaserSlam& slam, int done) mutable -> Status {
     const int i = done - 1;
     if (i <= first_new) return Ok{};
@@ -102,8 +106,7 @@ slam::AfterScan SlamCommand::autosaver(const LaserLog& log,
     }
     if (since_save_s < autosave_s_) return Ok{};
     since_save_s = 0.0;
-    return save_session({scans.begin(), scans.begin() + done}, starts, loop_closure,
-                        slam.snapshot());
+    return save_session({scans.begin(), scans.begin() + done}, starts, options, slam.snapshot());
   };
 }
 
@@ -117,13 +120,27 @@ Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
   if (Status s = check_same_laser(*session, log, name, input_.name()); !s) return s.error();
   // The session's SLAM settings: its scans rebuild its state only under them.
   bool session_loop_closure = true;
+  bool session_odometry = true;
   try {
     const YAML::Node settings = YAML::Load(session->options_yaml);
     if (settings["no_loop_closure"]) {
       session_loop_closure = !settings["no_loop_closure"].as<bool>();
     }
+    if (settings["no_odometry"]) session_odometry = !settings["no_odometry"].as<bool>();
   } catch (const YAML::Exception& e) {
     return input_error(name + ": its settings (OPTS record) are not readable YAML: " + e.what());
+  }
+  // The log's start is found, and a session replayed, by following the robot's odometry
+  // between scans (the localizer's view, the session's own SLAM settings).
+  if (!session_odometry) {
+    return input_error(name +
+                       ": it was mapped from the scans alone, and resuming follows the "
+                       "robot by its odometry");
+  }
+  if (!log.has_odometry) {
+    return input_error(input_.name() +
+                       ": it has no odometry, and resuming follows the robot by "
+                       "its odometry");
   }
   const double session_cell_m = session->map.geometry().resolution_m();
   if ((cell_m_ && std::abs(*cell_m_ - session_cell_m) > 1e-12) ||
@@ -250,12 +267,13 @@ std::vector<StampedPose2> SlamCommand::newest_poses(
 
 Status SlamCommand::save_session(const std::vector<StampedScan>& scans,
                                  const std::vector<slam::TrajectoryStart>& starts,
-                                 bool loop_closure, const slam::LaserSlamResult& r) const {
+                                 const slam::LaserSlamOptions& options,
+                                 const slam::LaserSlamResult& r) const {
   if (!save_) return Ok{};
   Session s;
   s.tessera_version = tessera_version();
   s.command = "slam";
-  s.options_yaml = session_options_yaml(*sub_, loop_closure);
+  s.options_yaml = session_options_yaml(*sub_, options);
   s.scans = scans;
   for (const slam::TrajectoryStart& t : starts) {
     if (t.first_scan < static_cast<int>(scans.size())) {

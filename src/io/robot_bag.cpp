@@ -49,8 +49,7 @@ Result<std::size_t> choose_topic(const RosBag& bag, const std::string& file, std
                        " topics: " + (candidates.empty() ? "none" : join_names(candidates)));
   }
   if (candidates.empty()) {
-    return input_error(file + ": no " + std::string(type) + " topic in the bag" +
-                       (type == kOdometryType ? " (SLAM on a bag needs odometry)" : ""));
+    return input_error(file + ": no " + std::string(type) + " topic in the bag");
   }
   if (candidates.size() > 1) {
     return usage_error(file + ": " + std::to_string(candidates.size()) + " " + std::string(type) +
@@ -185,29 +184,32 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     }
   }
   if (scans.empty()) return input_error(file + ": topic " + scans_t.name + " has no messages");
+  out.laser_frame = std::string(tf_frame_name(scans.front().second.header.frame_id));
   if (!odom_topic) {
-    const std::string laser(tf_frame_name(scans.front().second.header.frame_id));
-    std::optional<TfTree::MovingEdge> edge = tf.lowest_moving_edge(laser);
-    if (!edge) {
-      return input_error(file + ": no " + std::string(kOdometryType) +
-                         " topic, and no moving transform in /tf above the laser frame '" + laser +
-                         "' (SLAM on a bag needs odometry; tf frames: " + frame_list(tf) + ")");
+    std::optional<TfTree::MovingEdge> edge = tf.lowest_moving_edge(out.laser_frame);
+    if (edge) {
+      out.odom_frame = edge->parent;
+      child_frame = edge->child;
+      for (const auto& [t_ns, T] : edge->T_parent_child) odom.push_back({t_ns, planar_pose(T)});
+    } else {
+      // Scans alone: no odometry, and the robot is the laser unless the options name a base.
+      out.odom_topic.clear();
+      out.log.has_odometry = false;
+      child_frame = out.laser_frame;
+      odom.push_back({0, Pose2{}});
     }
-    out.odom_frame = edge->parent;
-    child_frame = edge->child;
-    for (const auto& [t_ns, T] : edge->T_parent_child) odom.push_back({t_ns, planar_pose(T)});
   }
   if (odom.empty()) return input_error(file + ": topic " + out.odom_topic + " has no messages");
   std::stable_sort(odom.begin(), odom.end(),
                    [](const PoseAtNs& a, const PoseAtNs& b) { return a.t_ns < b.t_ns; });
   out.base_frame =
       options.base_frame.empty() ? child_frame : std::string(tf_frame_name(options.base_frame));
-  out.laser_frame = std::string(tf_frame_name(scans.front().second.header.frame_id));
 
-  for (const PoseAtNs& o : odom) {
-    out.log.odometry.push_back({seconds(o.t_ns), o.pose});
+  if (out.log.has_odometry) {
+    for (const PoseAtNs& o : odom) out.log.odometry.push_back({seconds(o.t_ns), o.pose});
   }
-  const bool base_is_child = out.base_frame == child_frame;
+  // Without odometry every scan's is the identity: no tf lookup from the laser to a base.
+  const bool base_is_child = out.base_frame == child_frame || !out.log.has_odometry;
   out.log.scans.reserve(scans.size());
   for (std::size_t i = 0; i < scans.size(); ++i) {
     const auto& [log_time_ns, msg] = scans[i];

@@ -279,14 +279,21 @@ TEST(RobotBag, WithoutAnOdometryTopicTheOdometryComesFromTf) {
     EXPECT_NEAR(a.theta, b.theta, 1e-9) << k;
     EXPECT_NEAR(from_tf->log.scans[k].laser_in_robot.x, support::kSyntheticLaserX, 1e-12);
   }
-  // Neither an Odometry topic nor a moving transform: the error says what is missing.
+  // Neither an Odometry topic nor a moving transform: scans alone, the laser is the robot.
   Result<RobotBag> none = convert(
       without_topic(support::synthetic_run(RosEncoding::kRos1, 3, 36, /*with_tf=*/false), 1));
-  ASSERT_FALSE(none.ok());
-  EXPECT_EQ(none.error().kind, ErrorKind::kInput);
-  EXPECT_THAT(none.error().message,
-              HasSubstr("run.bag: no nav_msgs/Odometry topic, and no moving transform in /tf above "
-                        "the laser frame 'base_laser_link'"));
+  ASSERT_TRUE(none.ok()) << none.error().message;
+  EXPECT_FALSE(none->log.has_odometry);
+  EXPECT_TRUE(none->log.odometry.empty());
+  EXPECT_EQ(none->odom_topic, "");
+  EXPECT_EQ(none->odom_frame, "");
+  EXPECT_EQ(none->base_frame, "base_laser_link");
+  ASSERT_EQ(none->log.scans.size(), 3u);
+  for (const StampedScan& scan : none->log.scans) {
+    for (const Pose2& p : {scan.odometry, scan.laser_in_robot}) {
+      EXPECT_EQ(std::hypot(p.x, p.y) + std::abs(p.theta), 0.0);
+    }
+  }
 }
 
 TEST(TfTree, TheLowestMovingEdgeAboveAFrameIsItsOdometry) {
@@ -402,7 +409,8 @@ TEST(RobotBagRealData, Ros1NeatoLaserPoseMatchesTfStatic) {
 
 // The ROS 2 Neato's driver publishes its odometry both as /odom and as odom -> base_footprint on
 // /tf. Read as if the bag had no /odom, the odometry from tf is the same, scan for scan. The ROS 1
-// Neato bag's /tf holds only the robot's joints: without /odom it has no odometry, and says so.
+// Neato bag's /tf holds only the robot's joints: without /odom it has no odometry and is read as
+// scans alone.
 TEST(RobotBagRealData, OdometryFromTfIsWhereTheOdometryTopicPutsTheRobot) {
   const auto path = support::data_path("bags/ros2_neato_finite_state_controller");
   TESSERA_REQUIRE_DATA(path);
@@ -436,15 +444,30 @@ TEST(RobotBagRealData, OdometryFromTfIsWhereTheOdometryTopicPutsTheRobot) {
   TESSERA_REQUIRE_DATA(ros1);
   Result<RosBag> ros1_bag = read_ros_bag(ros1, read);
   ASSERT_TRUE(ros1_bag.ok()) << ros1_bag.error().message;
+  Result<RobotBag> ros1_with_odom = robot_bag_from(*ros1_bag, ros1.string(), options);
+  ASSERT_TRUE(ros1_with_odom.ok()) << ros1_with_odom.error().message;
   for (BagTopic& t : ros1_bag->topics) {
     if (t.name == "/odom") t.type = "nav_msgs/NotRecorded";
   }
+  // Its /tf holds only the wheels' joints: no odometry at all, the scans alone; a base frame the
+  // options name is placed by tf still.
   Result<RobotBag> none = robot_bag_from(*ros1_bag, ros1.string(), options);
-  ASSERT_FALSE(none.ok());
-  EXPECT_EQ(none.error().kind, ErrorKind::kInput);
-  EXPECT_THAT(none.error().message,
-              HasSubstr("no moving transform in /tf above the laser frame 'base_laser_link' (SLAM "
-                        "on a bag needs odometry; tf frames: base_footprint, base_laser_link,"));
+  ASSERT_TRUE(none.ok()) << none.error().message;
+  EXPECT_FALSE(none->log.has_odometry);
+  EXPECT_EQ(none->base_frame, "base_laser_link");
+  EXPECT_EQ(none->log.scans.size(), 404u);
+  RobotBagOptions on_base = options;
+  on_base.base_frame = "base_link";
+  Result<RobotBag> placed = robot_bag_from(*ros1_bag, ros1.string(), on_base);
+  ASSERT_TRUE(placed.ok()) << placed.error().message;
+  EXPECT_FALSE(placed->log.has_odometry);
+  const Pose2 d = between(ros1_with_odom->log.scans.front().laser_in_robot,
+                          placed->log.scans.front().laser_in_robot);
+  EXPECT_LT(std::hypot(d.x, d.y) + std::abs(d.theta), 1e-12);
+  EXPECT_GT(std::abs(placed->log.scans.front().laser_in_robot.theta), 3.0);  // mounted backwards
+  for (const StampedScan& scan : placed->log.scans) {
+    EXPECT_EQ(std::hypot(scan.odometry.x, scan.odometry.y) + std::abs(scan.odometry.theta), 0.0);
+  }
 }
 
 }  // namespace

@@ -7,7 +7,10 @@
 //     the nearer one outside their span). When the base frame is not the odometry's
 //     child_frame_id, T_child_base from tf is appended. A bag without nav_msgs/Odometry takes
 //     its odometry from tf instead: the lowest moving edge above the laser frame (odom -> base,
-//     as a base driver publishes it on /tf; TfTree::lowest_moving_edge), its child the base;
+//     as a base driver publishes it on /tf; TfTree::lowest_moving_edge), its child the base. A
+//     bag with neither (scans alone) gives a log without odometry (LaserLog::has_odometry false,
+//     every scan's odometry the identity) whose base frame is the laser's own unless
+//     RobotBagOptions::base_frame names one;
 //   - laser_in_robot: T_base_laser from the tf tree (/tf_static and /tf) at t_s: the chain from
 //     the base frame to the scan's header.frame_id (e.g. base_footprint -> base_link ->
 //     base_laser_link). Never an option: a bag without that chain is an input error. A laser
@@ -43,8 +46,8 @@ struct RobotBag {
   LaserLog log;
   std::string format;      // RosBag::format
   std::string scan_topic;  // the topics and frames chosen
-  std::string odom_topic;  // "/tf" when the odometry came from tf
-  std::string odom_frame;  // the odometry's header.frame_id (the tf edge's parent)
+  std::string odom_topic;  // "/tf" when the odometry came from tf, empty when there is none
+  std::string odom_frame;  // the odometry's header.frame_id (the tf edge's parent; empty: none)
   std::string base_frame;
   std::string laser_frame;     // the scans' header.frame_id (the first scan's)
   int no_return_readings = 0;  // readings mapped to no-return
@@ -64,8 +67,8 @@ struct RobotBag {
 /// Converts an already read bag (read with robot_bag_needs, or keeping everything).
 /// Errors: kUsage when several LaserScan or Odometry topics exist and the option does not choose
 /// (naming the candidates), or an option names a topic the bag lacks or of another type; kInput,
-/// naming `file`, for no LaserScan topic or no scans on it, no Odometry topic or no odometry
-/// messages, a message that does not decode (topic and message number), a scan frame with no tf
+/// naming `file`, for no LaserScan topic or no scans on it, an Odometry topic without messages,
+/// a message that does not decode (topic and message number), a scan frame with no tf
 /// chain to the base frame, and a scan whose angle_increment is 0 or not finite.
 [[nodiscard]] Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
                                               const RobotBagOptions& options = {});

@@ -28,6 +28,10 @@ struct LaserLog {
   std::vector<OdometryReading> odometry;
   /// How many scans have a stamp smaller than the scan before them.
   int backward_stamps = 0;
+  /// false: the log records no odometry (a bag of scans alone); every scan's `odometry` is the
+  /// identity and `odometry` is empty. SLAM then matches the scans alone
+  /// (slam::LaserSlamOptions::use_odometry).
+  bool has_odometry = true;
 };
 
 }  // namespace tessera

@@ -22,6 +22,7 @@
 #include "tessera/report/core_report.hpp"
 #include "tessera/report/eval_report.hpp"
 #include "tessera/slam/localizer.hpp"
+#include "tessera/slam/scan_matched_odometry.hpp"
 
 namespace tessera::cli {
 namespace {
@@ -81,18 +82,19 @@ int LocalizeCommand::run() const {
   const Session& session = setup->session;
   Result<LaserLog> log = input_.read(nullptr);
   if (!log) return report_error(log.error());
-  if (!log->has_odometry) {
-    return report_error(
-        input_error(input_.name() +
-                    ": it has no odometry, and localize follows the robot between scans by "
-                    "its odometry (slam --bag maps such a bag from its scans alone)"));
-  }
   if (Status s = check_same_laser(session, *log, session_.string(), input_.name()); !s) {
     return report_error(s.error());
   }
 
-  // The frozen map: the session's nodes at their optimised poses, as the SLAM built its submaps.
+  // The localizer follows the robot between scans by its odometry: an input without one gets an
+  // odometry made from its scans (local SLAM alone; counted in the run's time).
   const auto t0 = std::chrono::steady_clock::now();
+  const bool scan_matched = !log->has_odometry;
+  if (scan_matched) {
+    log = slam::with_scan_matched_odometry(std::move(log).value());
+    if (!log) return report_error(log.error());
+  }
+  // The frozen map: the session's nodes at their optimised poses, as the SLAM built its submaps.
   const slam::LocalizerOptions options;
   Result<slam::ProbabilityGrid> map = session_frozen_map(session, options, session_.string());
   if (!map) return report_error(map.error());
@@ -112,8 +114,9 @@ int LocalizeCommand::run() const {
     }
   }
   progress.finish();
-  return write_outputs(scans, localizer, input_.name(), seconds_since(t0), data_duration_s(*log),
-                       setup->relations, nullptr);
+  return write_outputs(scans, localizer, input_.name(),
+                       scan_matched ? "scan matching (the input has none)" : "the input",
+                       seconds_since(t0), data_duration_s(*log), setup->relations, nullptr);
 }
 
 Result<LocalizeCommand::Setup> LocalizeCommand::read_setup() const {
@@ -142,11 +145,12 @@ Result<LocalizeCommand::Setup> LocalizeCommand::read_setup() const {
 
 int LocalizeCommand::write_outputs(const std::vector<slam::LocalizedScan>& scans,
                                    const slam::Localizer& localizer, const std::string& input,
-                                   double wall_s, double duration_s,
+                                   const std::string& odometry, double wall_s, double duration_s,
                                    const std::optional<std::vector<Relation>>& relations,
                                    const nlohmann::json* ros) const {
   nlohmann::json options_json = {{"session", session_.string()},
                                  {"input", input},
+                                 {"odometry", odometry},
                                  {"initial_pose", initial_pose_.value_or("")},
                                  {"time_offset_s", time_offset_s_}};
   if (ros) options_json["ns"] = ns_;

@@ -62,7 +62,7 @@ int LocalizeCommand::run_ros() const {
   ros["scans_localized"] = st.scans_localized;
   ros["scans_lost"] = st.scans_lost;
   ros["poses_unsure"] = st.poses_unsure;
-  return write_outputs(scans, (*node)->localizer(), "ros", seconds_since(t0),
+  return write_outputs(scans, (*node)->localizer(), "ros", "the odometry topic", seconds_since(t0),
                        scans.back().t_s - scans.front().t_s, setup->relations, &ros);
 }
 

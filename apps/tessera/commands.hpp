@@ -311,10 +311,10 @@ class LocalizeCommand : public Command {
   [[nodiscard]] Result<Setup> read_setup() const;
   /// Scores, reports and writes a run's outputs (poses.csv, trajectory.txt, localization.png,
   /// report.json with `ros`'s counts when given) and prints its summary; the exit code. `input`
-  /// names where the scans came from.
+  /// names where the scans came from, `odometry` where their odometry did.
   [[nodiscard]] int write_outputs(const std::vector<slam::LocalizedScan>& scans,
                                   const slam::Localizer& localizer, const std::string& input,
-                                  double wall_s, double duration_s,
+                                  const std::string& odometry, double wall_s, double duration_s,
                                   const std::optional<std::vector<Relation>>& relations,
                                   const nlohmann::json* ros) const;
 };

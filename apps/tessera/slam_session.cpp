@@ -16,6 +16,7 @@
 #include "session_map.hpp"
 #include "tessera/io/session_file.hpp"
 #include "tessera/report/core_report.hpp"
+#include "tessera/slam/scan_matched_odometry.hpp"
 
 namespace tessera::cli {
 namespace {
@@ -130,18 +131,6 @@ Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
   } catch (const YAML::Exception& e) {
     return input_error(name + ": its settings (OPTS record) are not readable YAML: " + e.what());
   }
-  // The log's start is found, and a session replayed, by following the robot's odometry
-  // between scans (the localizer's view, the session's own SLAM settings).
-  if (!session_odometry) {
-    return input_error(name +
-                       ": it was mapped from the scans alone, and resuming follows the "
-                       "robot by its odometry");
-  }
-  if (!log.has_odometry) {
-    return input_error(input_.name() +
-                       ": it has no odometry, and resuming follows the robot by "
-                       "its odometry");
-  }
   const double session_cell_m = session->map.geometry().resolution_m();
   if ((cell_m_ && std::abs(*cell_m_ - session_cell_m) > 1e-12) ||
       (no_loop_closure_ && session_loop_closure)) {
@@ -152,6 +141,17 @@ Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
   }
   options.map_resolution_m = session_cell_m;
   options.loop_closure = session_loop_closure;
+
+  // The session replays under its own odometry setting (a session mapped from scans alone
+  // goes on so). The log's start is found by the localizer, which follows the robot between
+  // scans by its odometry: a log without one gets an odometry made from its scans.
+  options.use_odometry = session_odometry;
+  const bool scan_matched = !log.has_odometry;
+  if (scan_matched) {
+    Result<LaserLog> matched = slam::with_scan_matched_odometry(std::move(log), options);
+    if (!matched) return matched.error();
+    log = std::move(matched).value();
+  }
 
   // Where the log starts in the session's map.
   Pose2 T_map_first;
@@ -187,6 +187,7 @@ Result<SlamCommand::Resumed> SlamCommand::resume_session(LaserLog log,
       {"trajectories", slam::trajectory_count(out.starts)},
       {"start", {{"x_m", T_map_first.x}, {"y_m", T_map_first.y}, {"theta_rad", T_map_first.theta}}},
       {"start_from", initial_pose_ ? "--initial-pose" : "relocalization"},
+      {"odometry", scan_matched ? "scan matching (the log has none)" : "the log"},
       {"relocalized_after_s", found_after_s ? nlohmann::json(*found_after_s) : nullptr}};
   out.log.scans = std::move(session->scans);
   out.log.backward_stamps = log.backward_stamps;

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "laser_test_world.hpp"
+#include "office_run.hpp"
 #include "support/data.hpp"
 #include "tessera/core/angle.hpp"
 #include "tessera/core/rng.hpp"
@@ -21,33 +22,8 @@
 namespace tessera::slam {
 namespace {
 
-/// A short simulated run through the built-in office (0.1 m cells) that comes back to its start:
-/// 180-beam lidar, 5 scans per second, odometry drifting 0.01 rad per metre. Kept small: the
-/// suite also runs under AddressSanitizer. The run starts next to a wall with beams 2 degrees
-/// apart: without joining neighbouring returns in the submaps (RangeInsertOptions) its first
-/// matches snapped to the beam spacing and the whole map came out turned by 1.5 degrees.
-SimulatedLaserRun simulate_office(double scan_rate_hz, const OdometryErrorOptions& odometry) {
-  const World office = builtin_world("office", 0.1);
-  LaserRunOptions o;
-  o.lidar.beams = 180;
-  o.lidar.max_range_m = 10.0;
-  o.scan_rate_hz = scan_rate_hz;
-  o.max_duration_s = 70.0;
-  o.odometry = odometry;
-  Result<SimulatedLaserRun> r = simulate_laser_run(office, o, 7);
-  EXPECT_TRUE(r.ok()) << r.error().message;
-  return std::move(r).value();
-}
-
-const SimulatedLaserRun& office_run() {
-  static const SimulatedLaserRun run = [] {
-    OdometryErrorOptions odometry;
-    odometry.heading_drift_rad_per_m = 0.01;
-    return simulate_office(5.0, odometry);
-  }();
-  return run;
-}
-
+using testing::office_run;
+using testing::simulate_office;
 using testing::small_submaps;
 
 double mean_position_error(const std::vector<StampedPose2>& estimate,

@@ -28,12 +28,9 @@ std::vector<std::uint64_t> packed_rows(const Descriptors& d, int words) {
 
 // The distances of one query row to every train row; always inlined, so that the popcnt copy
 // below has the instruction in its own loop.
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-inline void
-hamming_row_body(const std::uint64_t* query, const std::uint64_t* train, int rows, int words,
-                 float* out) {
+[[gnu::always_inline]] inline void hamming_row_body(const std::uint64_t* query,
+                                                    const std::uint64_t* train, int rows, int words,
+                                                    float* out) {
   for (int j = 0; j < rows; ++j) {
     const std::uint64_t* t = train + static_cast<std::ptrdiff_t>(j) * words;
     int d = 0;

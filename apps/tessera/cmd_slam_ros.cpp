@@ -39,6 +39,10 @@ int SlamCommand::run_ros() const {
     return report_error(usage_error("--ros maps the topics: give no --log, --bag or --world"));
   }
   if (save_) return report_error(usage_error("--save saves a --log, --bag or --world run"));
+  if (input_.no_odometry) {
+    return report_error(usage_error(
+        "--no-odometry maps a --log or --bag; the live node pairs each scan with <ns>/odom"));
+  }
   nodes::SlamNodeOptions options;
   options.ns = ns_;
   options.slam.loop_closure = !no_loop_closure_;

@@ -58,7 +58,7 @@ int InfoCommand::run_bag() const {
   const RosBag& bag = *read;
   nlohmann::json lasers = nlohmann::json::array();
   for (const BagTopic& t : bag.topics) {
-    if (ros_type_is(t.type, kLaserScanType)) {
+    if (is_laser_scan_type(t.type)) {
       lasers.push_back(laser_reading(bag, file_.string(), t.name));
     }
   }

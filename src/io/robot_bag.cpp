@@ -27,18 +27,22 @@ std::string join_names(const std::vector<const BagTopic*>& topics) {
   return out;
 }
 
-/// The topic `wanted` names, or the only topic of `type`.
+bool is_odometry_type(std::string_view type) { return ros_type_is(type, kOdometryType); }
+
+/// The topic `wanted` names, or the only topic whose type `is_type` accepts (`type` names it in
+/// messages).
 Result<std::size_t> choose_topic(const RosBag& bag, const std::string& file, std::string_view type,
-                                 const std::string& wanted, std::string_view option) {
+                                 bool (*is_type)(std::string_view), const std::string& wanted,
+                                 std::string_view option) {
   std::vector<const BagTopic*> candidates;
   for (const BagTopic& t : bag.topics) {
-    if (ros_type_is(t.type, type)) candidates.push_back(&t);
+    if (is_type(t.type)) candidates.push_back(&t);
   }
   if (!wanted.empty()) {
     for (std::size_t i = 0; i < bag.topics.size(); ++i) {
       const BagTopic& t = bag.topics[i];
       if (t.name != wanted) continue;
-      if (!ros_type_is(t.type, type)) {
+      if (!is_type(t.type)) {
         return usage_error(file + ": " + std::string(option) + " " + wanted + " is a " + t.type +
                            " topic, expected " + std::string(type));
       }
@@ -110,7 +114,7 @@ Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_read
 
 bool robot_bag_needs(const BagTopic& topic) {
   bool is_static = false;
-  return ros_type_is(topic.type, kLaserScanType) || ros_type_is(topic.type, kOdometryType) ||
+  return is_laser_scan_type(topic.type) || ros_type_is(topic.type, kOdometryType) ||
          (ros_type_is(topic.type, kTfMessageType) && is_tf_topic(topic.name, is_static));
 }
 
@@ -118,11 +122,12 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
                                 const RobotBagOptions& options) {
   // A bag without scans is bad input whatever the options say.
   if (std::none_of(bag.topics.begin(), bag.topics.end(),
-                   [](const BagTopic& t) { return ros_type_is(t.type, kLaserScanType); })) {
-    return input_error(file + ": no " + std::string(kLaserScanType) + " topic in the bag");
+                   [](const BagTopic& t) { return is_laser_scan_type(t.type); })) {
+    return input_error(file + ": no " + std::string(kLaserScanType) + " (or " +
+                       std::string(kMultiEchoLaserScanType) + ") topic in the bag");
   }
-  Result<std::size_t> scan_topic =
-      choose_topic(bag, file, kLaserScanType, options.scan_topic, "--scan-topic");
+  Result<std::size_t> scan_topic = choose_topic(bag, file, kLaserScanType, is_laser_scan_type,
+                                                options.scan_topic, "--scan-topic");
   if (!scan_topic) return scan_topic.error();
   // The odometry: the Odometry topic, or in a bag that records none (and no --odom-topic names
   // one) the moving tf edge above the laser, odom -> base as the base's driver publishes it on /tf.
@@ -130,8 +135,8 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
   if (!options.odom_topic.empty() ||
       std::any_of(bag.topics.begin(), bag.topics.end(),
                   [](const BagTopic& t) { return ros_type_is(t.type, kOdometryType); })) {
-    Result<std::size_t> chosen =
-        choose_topic(bag, file, kOdometryType, options.odom_topic, "--odom-topic");
+    Result<std::size_t> chosen = choose_topic(bag, file, kOdometryType, is_odometry_type,
+                                              options.odom_topic, "--odom-topic");
     if (!chosen) return chosen.error();
     odom_topic = *chosen;
   }
@@ -139,6 +144,7 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
   RobotBag out;
   out.format = bag.format;
   const BagTopic& scans_t = bag.topics[*scan_topic];
+  const bool multi_echo = ros_type_is(scans_t.type, kMultiEchoLaserScanType);
   out.scan_topic = scans_t.name;
   out.odom_topic = odom_topic ? bag.topics[*odom_topic].name : "/tf";
   std::vector<const BagTopic*> decoded = {&scans_t};
@@ -165,7 +171,8 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     const RosEncoding encoding = encoding_of(t, known);
     bool is_static = false;
     if (m.topic == *scan_topic) {
-      Result<LaserScanMessage> s = decode_laser_scan(bag.bytes(m), encoding);
+      Result<LaserScanMessage> s = multi_echo ? decode_multi_echo_laser_scan(bag.bytes(m), encoding)
+                                              : decode_laser_scan(bag.bytes(m), encoding);
       if (!s) return input_error(at(file, t, n) + ": " + s.error().message);
       scans.emplace_back(m.log_time_ns, std::move(s).value());
     } else if (odom_topic && m.topic == *odom_topic) {

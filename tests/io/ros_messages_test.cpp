@@ -5,6 +5,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "support/bag_writer.hpp"
 
 namespace tessera {
@@ -38,6 +41,33 @@ TEST_P(BothEncodings, LaserScanRoundTripsEveryField) {
   EXPECT_EQ(r->range_max_m, 5.0F);
   EXPECT_EQ(r->ranges_m, m.ranges_m);
   EXPECT_EQ(r->intensities, m.intensities);
+}
+
+// A MultiEchoLaserScan reads as the LaserScan of its first echoes (the writer puts a second echo
+// 1 m beyond each first); a beam without an echo is no reading.
+TEST_P(BothEncodings, MultiEchoLaserScanReadsItsFirstEchoes) {
+  LaserScanMessage m = sample_scan();
+  m.ranges_m.push_back(std::numeric_limits<float>::quiet_NaN());  // written with no echo
+  const std::vector<std::uint8_t> bytes = support::encode_multi_echo_laser_scan(m, GetParam());
+  Result<LaserScanMessage> r = decode_multi_echo_laser_scan(bytes, GetParam());
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  EXPECT_EQ(r->header.stamp_ns, m.header.stamp_ns);
+  EXPECT_EQ(r->header.frame_id, "laser");
+  EXPECT_EQ(r->angle_increment_rad, 1.0F);
+  EXPECT_EQ(r->range_max_m, 5.0F);
+  ASSERT_EQ(r->ranges_m.size(), 5u);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(r->ranges_m[i], m.ranges_m[i]) << i;
+  EXPECT_TRUE(std::isnan(r->ranges_m[4]));
+  EXPECT_EQ(r->intensities, std::vector<float>(5, 100.0F));
+  for (std::size_t n = 0; n < bytes.size(); ++n) {
+    const std::span<const std::uint8_t> cut(bytes.data(), n);
+    Result<LaserScanMessage> bad = decode_multi_echo_laser_scan(cut, GetParam());
+    ASSERT_FALSE(bad.ok()) << n << " bytes";
+    EXPECT_THAT(bad.error().message, HasSubstr("sensor_msgs/MultiEchoLaserScan"));
+  }
+  EXPECT_TRUE(is_laser_scan_type("sensor_msgs/msg/MultiEchoLaserScan"));
+  EXPECT_TRUE(is_laser_scan_type("sensor_msgs/LaserScan"));
+  EXPECT_FALSE(is_laser_scan_type("sensor_msgs/PointCloud2"));
 }
 
 TEST_P(BothEncodings, OdometryKeepsFramesAndPose) {

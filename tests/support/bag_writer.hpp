@@ -7,6 +7,7 @@
 #include <lz4frame.h>
 #include <zstd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -78,6 +79,29 @@ inline std::vector<std::uint8_t> encode_laser_scan(const LaserScanMessage& m, Ro
   }
   w.f32_sequence(m.ranges_m);
   w.f32_sequence(m.intensities);
+  return std::move(w).take();
+}
+
+/// The same scan as a sensor_msgs/MultiEchoLaserScan: per beam `echoes` echoes, the first the
+/// range (none where it is NaN), the others 1 m beyond it.
+inline std::vector<std::uint8_t> encode_multi_echo_laser_scan(const LaserScanMessage& m,
+                                                              RosEncoding e, int echoes = 2) {
+  MessageWriter w(e);
+  w.header(m.header);
+  for (float f : {m.angle_min_rad, m.angle_max_rad, m.angle_increment_rad, m.time_increment_s,
+                  m.scan_time_s, m.range_min_m, m.range_max_m}) {
+    w.f32(f);
+  }
+  w.u32(static_cast<std::uint32_t>(m.ranges_m.size()));
+  for (float r : m.ranges_m) {
+    std::vector<float> beam;
+    if (!std::isnan(r)) {
+      for (int k = 0; k < echoes; ++k) beam.push_back(r + static_cast<float>(k));
+    }
+    w.f32_sequence(beam);
+  }
+  w.u32(static_cast<std::uint32_t>(m.ranges_m.size()));
+  for (std::size_t i = 0; i < m.ranges_m.size(); ++i) w.f32_sequence({100.0F});
   return std::move(w).take();
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // A robot's laser run in a ROS bag as a LaserLog (the type CARMEN logs give, so `tessera slam
-// --bag` runs the same SLAM as --log): one StampedScan per sensor_msgs/LaserScan message with
+// --bag` runs the same SLAM as --log): one StampedScan per sensor_msgs/LaserScan message (or
+// MultiEchoLaserScan, read by its first echoes: ros_messages.hpp) with
 //   - t_s: the scan's header stamp (its log time when the stamp is 0), seconds since the epoch;
 //   - odometry: T_odom_base from nav_msgs/Odometry interpolated at t_s between the odometry
 //     messages just before and after it (by header stamp; linear in x, y, shortest arc in theta;

@@ -87,6 +87,11 @@ struct OdometryMessage {
 /// string lacks its NUL, or the encapsulation is not plain CDR; the caller adds file and topic.
 [[nodiscard]] Result<LaserScanMessage> decode_laser_scan(std::span<const std::uint8_t> bytes,
                                                          RosEncoding encoding);
+/// sensor_msgs/MultiEchoLaserScan (the LaserScan fields with a LaserEcho, a float32[] of echoes,
+/// per beam; Cartographer's own bags record their lasers so) read as a LaserScan of each beam's
+/// first echo, as Cartographer reads it; a beam without an echo is NaN (no reading).
+[[nodiscard]] Result<LaserScanMessage> decode_multi_echo_laser_scan(
+    std::span<const std::uint8_t> bytes, RosEncoding encoding);
 [[nodiscard]] Result<OdometryMessage> decode_odometry(std::span<const std::uint8_t> bytes,
                                                       RosEncoding encoding);
 [[nodiscard]] Result<TfMessage> decode_tf_message(std::span<const std::uint8_t> bytes,
@@ -95,8 +100,11 @@ struct OdometryMessage {
 /// The type names in ROS 1 form ("sensor_msgs/LaserScan"); ros_type_is accepts ROS 2's
 /// "sensor_msgs/msg/LaserScan" for the same type.
 inline constexpr std::string_view kLaserScanType = "sensor_msgs/LaserScan";
+inline constexpr std::string_view kMultiEchoLaserScanType = "sensor_msgs/MultiEchoLaserScan";
 inline constexpr std::string_view kOdometryType = "nav_msgs/Odometry";
 inline constexpr std::string_view kTfMessageType = "tf2_msgs/TFMessage";
 [[nodiscard]] bool ros_type_is(std::string_view type, std::string_view ros1_name);
+/// A LaserScan or a MultiEchoLaserScan: a planar laser's scan.
+[[nodiscard]] bool is_laser_scan_type(std::string_view type);
 
 }  // namespace tessera

@@ -85,7 +85,6 @@ TEST(LaserSlam, WithoutOdometryTheScansAloneFollowTheRobot) {
   EXPECT_EQ(ate->trans_m.count, run.truth.size());
   EXPECT_LT(ate->trans_m.rmse, 0.1);
   EXPECT_GT(r->stats.loop_closures, 0);
-
 }
 
 // Issue 12: a loop must be found after metres of drift. Local SLAM is made to follow a badly

@@ -203,10 +203,11 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
       out.odom_topic.clear();
       out.log.has_odometry = false;
       child_frame = out.laser_frame;
-      odom.push_back({0, Pose2{}});
     }
   }
-  if (odom.empty()) return input_error(file + ": topic " + out.odom_topic + " has no messages");
+  if (out.log.has_odometry && odom.empty()) {
+    return input_error(file + ": topic " + out.odom_topic + " has no messages");
+  }
   std::stable_sort(odom.begin(), odom.end(),
                    [](const PoseAtNs& a, const PoseAtNs& b) { return a.t_ns < b.t_ns; });
   out.base_frame =
@@ -215,8 +216,7 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
   if (out.log.has_odometry) {
     for (const PoseAtNs& o : odom) out.log.odometry.push_back({seconds(o.t_ns), o.pose});
   }
-  // Without odometry every scan's is the identity: no tf lookup from the laser to a base.
-  const bool base_is_child = out.base_frame == child_frame || !out.log.has_odometry;
+  const bool base_is_child = out.base_frame == child_frame;
   out.log.scans.reserve(scans.size());
   for (std::size_t i = 0; i < scans.size(); ++i) {
     const auto& [log_time_ns, msg] = scans[i];
@@ -225,16 +225,17 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     if (!scan.ok()) return input_error(at(file, scans_t, i) + ": " + scan.error().message);
     StampedScan s;
     s.t_s = seconds(stamp);
-    Pose2 T_odom_base = pose_at(odom, stamp);
-    if (!base_is_child) {
-      Result<RosTransform> T_child_base = tf.lookup(child_frame, out.base_frame, stamp);
-      if (!T_child_base) {
-        return input_error(file + ": base frame '" + out.base_frame +
-                           "': " + T_child_base.error().message + " (the odometry's child frame)");
+    if (out.log.has_odometry) {  // without, every scan's odometry is the identity
+      s.odometry = pose_at(odom, stamp);
+      if (!base_is_child) {
+        Result<RosTransform> T_child_base = tf.lookup(child_frame, out.base_frame, stamp);
+        if (!T_child_base) {
+          return input_error(file + ": base frame '" + out.base_frame + "': " +
+                             T_child_base.error().message + " (the odometry's child frame)");
+        }
+        s.odometry = s.odometry * planar_pose(*T_child_base);
       }
-      T_odom_base = T_odom_base * planar_pose(*T_child_base);
     }
-    s.odometry = T_odom_base;
     const std::string_view laser = tf_frame_name(msg.header.frame_id);
     if (laser != out.base_frame) {
       Result<RosTransform> T_base_laser = tf.lookup(out.base_frame, laser, stamp);

@@ -85,7 +85,7 @@ Result<std::unique_ptr<LocalizerNode>> LocalizerNode::create(slam::ProbabilityGr
     return usage_error("localizer node: queue_depth must be > 0, unsure_variance_* >= 0");
   }
   Result<std::unique_ptr<ScanInput>> input =
-      ScanInput::create(options.ns, options.queue_depth, transport);
+      ScanInput::create(options.ns, {.queue_depth = options.queue_depth}, transport);
   if (!input.ok()) return input.error();
   Result<PoseOutputs> outputs = PoseOutputs::advertise(transport, options.ns, options.map_frame);
   if (!outputs.ok()) return outputs.error();

@@ -38,11 +38,22 @@ Result<std::unique_ptr<LogPlayer>> LogPlayer::create(const LaserLog& log,
   const std::string odom_topic = *net::resolve_topic_name("odom", options.ns);
   for (Status st :
        {transport.advertise({*scan_topic, std::string(kRos2LaserScan), sensors}, s.scan),
-        transport.advertise({odom_topic, std::string(kRos2Odometry), sensors}, s.odom),
         transport.advertise({"/clock", std::string(kRos2Clock), Qos::clock()}, s.clock),
         transport.advertise({"/tf_static", std::string(kRos2TfMessage), Qos::tf_static()},
                             s.tf_static)}) {
     if (!st.ok()) return st.error();
+  }
+  if (log.has_odometry) {
+    if (Status st = transport.advertise({odom_topic, std::string(kRos2Odometry), sensors}, s.odom);
+        !st.ok()) {
+      return st.error();
+    }
+  }
+  // A log of scans alone whose laser is the robot has no base_link to place it on.
+  const Pose2& laser_in_robot = log.scans.front().laser_in_robot;
+  if (!log.has_odometry && laser_in_robot.x == 0.0 && laser_in_robot.y == 0.0 &&
+      laser_in_robot.theta == 0.0) {
+    return std::unique_ptr<LogPlayer>(new LogPlayer(std::move(state)));
   }
   TfMessage statics;
   statics.transforms.push_back(
@@ -63,11 +74,13 @@ Status LogPlayer::publish_next() {
   State& s = *state_;
   const StampedScan& scan = s.log.scans[s.next];
   const std::int64_t stamp = to_ns(scan.t_s);
-  OdometryMessage odom;
-  odom.header = {stamp, s.frame_prefix + "odom"};
-  odom.child_frame_id = s.frame_prefix + "base_link";
-  odom.pose = planar_transform(scan.odometry.x, scan.odometry.y, scan.odometry.theta);
-  if (Status st = s.transport.publish(s.odom, encode_cdr(odom)); !st.ok()) return st;
+  if (s.log.has_odometry) {
+    OdometryMessage odom;
+    odom.header = {stamp, s.frame_prefix + "odom"};
+    odom.child_frame_id = s.frame_prefix + "base_link";
+    odom.pose = planar_transform(scan.odometry.x, scan.odometry.y, scan.odometry.theta);
+    if (Status st = s.transport.publish(s.odom, encode_cdr(odom)); !st.ok()) return st;
+  }
   if (Status st = s.transport.publish(
           s.scan, encode_cdr(laser_scan_message(scan.scan, stamp, s.frame_prefix + "laser")));
       !st.ok()) {

@@ -44,13 +44,15 @@ struct ScanInput::State {
   };
 
   std::uint32_t queue_depth;
+  bool use_odometry;
   ScanInputStats stats;
   std::deque<PendingScan> pending;
   std::vector<PoseAtNs> odometry;  // T_odom_base by stamp, pruned (prune_odometry)
   std::string odom_frame, base_frame;
   TfTree tf;
 
-  explicit State(std::uint32_t depth) : queue_depth(depth) {}
+  explicit State(const ScanInputOptions& o)
+      : queue_depth(o.queue_depth), use_odometry(o.use_odometry), base_frame(o.base_frame) {}
 
   Status connect(const std::string& ns, Transport& transport) {
     Result<std::string> scan_topic = net::resolve_topic_name("scan", ns);
@@ -61,15 +63,15 @@ struct ScanInput::State {
     const Qos sensors{Qos::Reliability::kBestEffort, Qos::Durability::kVolatile, queue_depth};
     for (Status s : {transport.listen({*scan_topic, std::string(kRos2LaserScan), sensors},
                                       [this](auto cdr) { on_scan(cdr); }),
-                     transport.listen({odom_topic, std::string(kRos2Odometry), sensors},
-                                      [this](auto cdr) { on_odom(cdr); }),
                      transport.listen({"/tf_static", std::string(kRos2TfMessage), Qos::tf_static()},
                                       [this](auto cdr) { on_tf(cdr, true); }),
                      transport.listen({"/tf", std::string(kRos2TfMessage), Qos::tf()},
                                       [this](auto cdr) { on_tf(cdr, false); })}) {
       if (!s.ok()) return s;
     }
-    return Ok{};
+    if (!use_odometry) return Ok{};
+    return transport.listen({odom_topic, std::string(kRos2Odometry), sensors},
+                            [this](auto cdr) { on_odom(cdr); });
   }
 
   void on_scan(std::span<const std::uint8_t> cdr) {
@@ -138,10 +140,17 @@ struct ScanInput::State {
                               [](const PoseAtNs& a, const PoseAtNs& b) { return a.t_ns < b.t_ns; });
   }
 
+  // The robot frame of a scan: the odometry's child frame; without odometry the one asked for,
+  // or the laser's own.
+  [[nodiscard]] const std::string& robot_frame(const PendingScan& s) const {
+    return !use_odometry && base_frame.empty() ? s.frame : base_frame;
+  }
+
   // T_base_laser of a scan frame (and whether the laser is upside down), if the tf tree knows it.
   [[nodiscard]] std::optional<PlanarLaser> laser_in_robot(const PendingScan& s) const {
-    if (s.frame == base_frame) return PlanarLaser{};
-    Result<RosTransform> T = tf.lookup(base_frame, s.frame, s.t_ns);
+    const std::string& base = robot_frame(s);
+    if (s.frame == base) return PlanarLaser{};
+    Result<RosTransform> T = tf.lookup(base, s.frame, s.t_ns);
     if (!T.ok()) return std::nullopt;
     return planar_laser(*T);
   }
@@ -151,6 +160,7 @@ struct ScanInput::State {
   // scan still to come may need a message older than the scan just taken). Memory stays bounded
   // by the wait queue and that window, however far the caller falls behind.
   void prune_odometry() {
+    if (odometry.empty()) return;
     constexpr std::int64_t kOdometryKept_ns = 10'000'000'000;
     std::int64_t oldest = 0;  // a peer's stamps may be anything: no signed overflow
     if (__builtin_sub_overflow(odometry.back().t_ns, kOdometryKept_ns, &oldest)) {
@@ -168,9 +178,9 @@ ScanInput::ScanInput(std::unique_ptr<State> state) : state_(std::move(state)) {}
 ScanInput::~ScanInput() = default;
 
 Result<std::unique_ptr<ScanInput>> ScanInput::create(const std::string& ns,
-                                                     std::uint32_t queue_depth,
+                                                     const ScanInputOptions& options,
                                                      net::Transport& transport) {
-  auto state = std::make_unique<State>(queue_depth);
+  auto state = std::make_unique<State>(options);
   if (Status s = state->connect(ns, transport); !s.ok()) return s.error();
   return std::unique_ptr<ScanInput>(new ScanInput(std::move(state)));
 }
@@ -180,7 +190,8 @@ std::optional<ReadyScan> ScanInput::next(bool flush) {
   while (!s.pending.empty()) {
     const State::PendingScan& p = s.pending.front();
     const bool odometry_known =
-        !s.odometry.empty() && (flush || p.odometry_passed || s.has_odometry_at(p.t_ns));
+        !s.use_odometry ||
+        (!s.odometry.empty() && (flush || p.odometry_passed || s.has_odometry_at(p.t_ns)));
     if (!odometry_known && !flush) return std::nullopt;
     const std::optional<PlanarLaser> laser = odometry_known ? s.laser_in_robot(p) : std::nullopt;
     if (odometry_known && !laser && !flush && s.pending.size() < s.queue_depth) {
@@ -191,7 +202,9 @@ std::optional<ReadyScan> ScanInput::next(bool flush) {
       s.pending.pop_front();
       continue;
     }
-    ReadyScan ready{StampedScan{seconds(p.t_ns), pose_at(s.odometry, p.t_ns), laser->T_base_laser,
+    if (!s.use_odometry) s.odom_frame = s.robot_frame(p);
+    const Pose2 T_odom_base = s.use_odometry ? pose_at(s.odometry, p.t_ns) : Pose2{};
+    ReadyScan ready{StampedScan{seconds(p.t_ns), T_odom_base, laser->T_base_laser,
                                 laser->upside_down ? mirrored(p.scan) : p.scan},
                     p.t_ns, p.received};
     s.prune_odometry();  // while this scan still waits: it keeps the odometry around it

@@ -3,6 +3,7 @@
 #include "tessera/nodes/slam_node.hpp"
 
 #include <chrono>
+#include <string>
 #include <vector>
 
 #include "tessera/nodes/pose_outputs.hpp"
@@ -95,8 +96,17 @@ Result<std::unique_ptr<SlamNode>> SlamNode::create(const SlamNodeOptions& option
     return usage_error(
         "slam node: map_period_wall_s and queue_depth must be > 0, map_period_stamp_s >= 0");
   }
+  if (options.slam.use_odometry && !options.base_frame.empty()) {
+    return usage_error(
+        "slam node: base_frame is for scans alone; with odometry the robot frame is the "
+        "odometry's child frame");
+  }
   Result<std::unique_ptr<ScanInput>> input =
-      ScanInput::create(options.ns, options.queue_depth, transport);
+      ScanInput::create(options.ns,
+                        {.queue_depth = options.queue_depth,
+                         .use_odometry = options.slam.use_odometry,
+                         .base_frame = options.base_frame},
+                        transport);
   if (!input.ok()) return input.error();
   Result<PoseOutputs> outputs = PoseOutputs::advertise(transport, options.ns, options.map_frame);
   if (!outputs.ok()) return outputs.error();
@@ -131,7 +141,17 @@ Result<slam::LaserSlamResult> SlamNode::finish() {
     if (!progressed.ok()) return progressed.error();
     if (!*progressed) break;
   }
-  if (!s.started) return input_error("slam node: no scan with odometry arrived");
+  if (!s.started) {
+    const ScanInputStats& in = s.input->stats();
+    if (!s.options.slam.use_odometry) return input_error("slam node: no scan arrived");
+    if (in.scans_received > 0 && in.odometry_received == 0) {
+      return input_error("slam node: no scan with odometry arrived (" +
+                         std::to_string(in.scans_received) +
+                         " scans and no odometry: a robot without odometry is mapped from its "
+                         "scans alone)");
+    }
+    return input_error("slam node: no scan with odometry arrived");
+  }
   Result<slam::LaserSlamResult> result = s.slam.finish();
   if (!result.ok()) return result;
   const std::int64_t stamp = result->trajectory.empty() ? 0 : to_ns(result->trajectory.back().t_s);
@@ -148,6 +168,7 @@ const OccupancyGrid* SlamNode::map() const {
   return state_->last_map_grid ? &*state_->last_map_grid : nullptr;
 }
 Pose2 SlamNode::T_map_odom() const { return state_->T_map_odom; }
+const std::string& SlamNode::odom_frame() const { return state_->input->odom_frame(); }
 const std::vector<double>& SlamNode::map_latencies_s() const { return state_->map_latencies_s; }
 std::optional<PoseAtNs> SlamNode::latest_odometry() const {
   return state_->input->latest_odometry();

@@ -5,7 +5,9 @@
 
 #include <cmath>
 
+#include "tessera/io/robot_bag.hpp"
 #include "tessera/io/ros_message_encoders.hpp"
+#include "tessera/io/ros_messages.hpp"
 #include "tessera/net/in_process_transport.hpp"
 #include "tessera/nodes/log_player.hpp"
 #include "tessera/record/ros_conversions.hpp"
@@ -83,6 +85,138 @@ TEST(SlamNode, ALogPlayedOverTopicsGivesTheOfflineTrajectory) {
   ASSERT_EQ(maps.size(), 1U);
   EXPECT_EQ(maps[0].header.frame_id, "r1/map");
   EXPECT_EQ(maps[0].width, static_cast<std::uint32_t>(live->map.geometry().width()));
+}
+
+// The office run as a robot without odometry would log it: scans alone (decision 0034), each
+// as it comes off the topic (ranges and angles in float32, stamps in nanoseconds), so that the
+// offline run and the node see the same numbers. Without odometry every prediction is the last
+// match's step, so a rounding difference would carry on from scan to scan (millimetres). The first
+// 200 scans (20 s) keep the test short.
+LaserLog scans_alone(LaserLog log) {
+  log.has_odometry = false;
+  if (log.scans.size() > 200) log.scans.resize(200);
+  for (StampedScan& s : log.scans) {
+    s.odometry = Pose2{};
+    const std::int64_t t_ns = to_ns(s.t_s);
+    int no_return = 0;
+    s.scan = *range_scan_of(laser_scan_message(s.scan, t_ns, "laser"), no_return);
+    s.t_s = 1e-9 * static_cast<double>(t_ns);
+  }
+  return log;
+}
+
+// Plays `log` into a scans-alone SLAM node whose robot frame is `base_frame`; the trajectory, and
+// how many odometry messages a listener on /r1/odom heard.
+struct ScansAloneRun {
+  Result<slam::LaserSlamResult> result = input_error("not run");
+  SlamNodeStats stats;
+  std::string odom_frame;
+  std::size_t odometry_heard = 0;
+  std::vector<std::string> tf_children;  // child frames of the /tf transforms published
+};
+
+ScansAloneRun play_scans_alone(const LaserLog& log, const std::string& base_frame) {
+  net::InProcessBus bus;
+  auto player_side = bus.join();
+  auto slam_side = bus.join();
+  auto listener = bus.join();
+  ScansAloneRun run;
+  EXPECT_TRUE(listener
+                  ->subscribe({"/r1/odom", std::string(kRos2Odometry), Qos::sensor_data()},
+                              [&](std::span<const std::uint8_t>) { ++run.odometry_heard; })
+                  .ok());
+  EXPECT_TRUE(listener
+                  ->subscribe({"/tf", std::string(kRos2TfMessage), Qos::tf()},
+                              [&](std::span<const std::uint8_t> cdr) {
+                                Result<TfMessage> m = decode_tf_message(cdr, RosEncoding::kCdr);
+                                if (!m.ok()) return;
+                                for (const auto& t : m->transforms) {
+                                  run.tf_children.push_back(t.child_frame_id);
+                                }
+                              })
+                  .ok());
+  auto player = LogPlayer::create(log, {.ns = "/r1"}, *player_side);
+  EXPECT_TRUE(player.ok());
+  SlamNodeOptions options{.ns = "/r1", .map_frame = "r1/map"};
+  options.slam.use_odometry = false;
+  options.base_frame = base_frame;
+  auto node = SlamNode::create(options, *slam_side);
+  EXPECT_TRUE(node.ok());
+  if (!player.ok() || !node.ok()) return run;
+  while (!(*player)->done()) {
+    EXPECT_TRUE((*player)->publish_next().ok());
+    EXPECT_TRUE((*node)->spin_once().ok());
+    listener->poll();
+  }
+  run.result = (*node)->finish();
+  listener->poll();
+  run.stats = (*node)->stats();
+  run.odom_frame = (*node)->odom_frame();
+  return run;
+}
+
+double worst_offset_m(const std::vector<StampedPose2>& a, const std::vector<StampedPose2>& b) {
+  double worst_m = 0.0;
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
+    worst_m = std::max(worst_m, std::hypot(a[i].pose.x - b[i].pose.x, a[i].pose.y - b[i].pose.y));
+  }
+  return worst_m;
+}
+
+// A robot without odometry publishes its scans and the laser's place on base_link: the node maps
+// them as the offline pipeline maps the same scans alone, and /tf carries map -> base_link.
+TEST(SlamNode, WithoutOdometryScansAloneAreMappedAsOffline) {
+  const LaserLog log = scans_alone(office_log());
+  slam::LaserSlamOptions options;
+  options.use_odometry = false;
+  Result<slam::LaserSlamResult> offline = slam::run_laser_slam(log, options);
+  ASSERT_TRUE(offline.ok());
+
+  const ScansAloneRun live = play_scans_alone(log, "r1/base_link");
+  ASSERT_TRUE(live.result.ok()) << live.result.error().message;
+  EXPECT_EQ(live.stats.scans_added, log.scans.size());
+  EXPECT_EQ(live.stats.odometry_received, 0U);
+  EXPECT_EQ(live.odometry_heard, 0U);  // the player sends none for a log without odometry
+  EXPECT_EQ(live.odom_frame, "r1/base_link");
+  ASSERT_FALSE(live.tf_children.empty());
+  EXPECT_EQ(live.tf_children.back(), "r1/base_link");
+  ASSERT_EQ(live.result->trajectory.size(), offline->trajectory.size());
+  EXPECT_LT(worst_offset_m(live.result->trajectory, offline->trajectory), 1e-6);
+}
+
+// A bare laser (no base_link, no tf at all): the laser's own frame is the robot.
+TEST(SlamNode, WithoutOdometryOrBaseFrameTheLaserIsTheRobot) {
+  LaserLog log = scans_alone(office_log());
+  for (StampedScan& s : log.scans) s.laser_in_robot = Pose2{};
+  slam::LaserSlamOptions options;
+  options.use_odometry = false;
+  Result<slam::LaserSlamResult> offline = slam::run_laser_slam(log, options);
+  ASSERT_TRUE(offline.ok());
+
+  const ScansAloneRun live = play_scans_alone(log, "");
+  ASSERT_TRUE(live.result.ok()) << live.result.error().message;
+  EXPECT_EQ(live.stats.scans_added, log.scans.size());
+  EXPECT_EQ(live.stats.scans_dropped_no_pose, 0U);
+  EXPECT_EQ(live.odom_frame, "r1/laser");
+  ASSERT_FALSE(live.tf_children.empty());
+  EXPECT_EQ(live.tf_children.back(), "r1/laser");
+  EXPECT_LT(worst_offset_m(live.result->trajectory, offline->trajectory), 1e-6);
+
+  // The same scans into a node that waits for odometry: none is mapped, and it says why.
+  net::InProcessBus bus;
+  auto player_side = bus.join();
+  auto slam_side = bus.join();
+  auto player = LogPlayer::create(log, {}, *player_side);
+  auto node = SlamNode::create({}, *slam_side);
+  ASSERT_TRUE(player.ok() && node.ok());
+  for (int i = 0; i < 20; ++i) {
+    ASSERT_TRUE((*player)->publish_next().ok());
+    ASSERT_EQ(*(*node)->spin_once(), 0);
+  }
+  const auto none = (*node)->finish();
+  ASSERT_FALSE(none.ok());
+  EXPECT_EQ(none.error().kind, ErrorKind::kInput);
+  EXPECT_THAT(none.error().message, HasSubstr("20 scans and no odometry"));
 }
 
 TEST(SlamNode, BadMessagesAreDroppedAndCounted) {
@@ -183,6 +317,35 @@ TEST_F(SlamNodeInputs, AScanWaitsForItsOdometryAndItsLaserTransform) {
   EXPECT_TRUE(node->started());
 }
 
+TEST(SlamNode, WithoutOdometryAScanWaitsForItsLaserTransformOnly) {
+  net::InProcessBus bus;
+  auto sender = bus.join();
+  auto slam_side = bus.join();
+  SlamNodeOptions options;
+  options.slam.use_odometry = false;
+  options.base_frame = "base_link";
+  auto node = SlamNode::create(options, *slam_side);
+  ASSERT_TRUE(node.ok());
+  const auto scan_w = sender->advertise({"/scan", std::string(kRos2LaserScan), Qos::sensor_data()});
+  const auto tf_w =
+      sender->advertise({"/tf_static", std::string(kRos2TfMessage), Qos::tf_static()});
+  ASSERT_TRUE(scan_w.ok() && tf_w.ok());
+  const std::int64_t t0 = 1'000'000'000;
+  ASSERT_TRUE(sender
+                  ->publish(*scan_w,
+                            encode_cdr(laser_scan_message(office_log().scans[0].scan, t0, "laser")))
+                  .ok());
+  EXPECT_EQ(*(*node)->spin_once(), 0);  // no base_link -> laser yet
+  TfMessage statics;
+  statics.transforms.push_back(
+      planar_transform_stamped(Pose2{0.1, 0, 0}, t0, "base_link", "laser"));
+  ASSERT_TRUE(sender->publish(*tf_w, encode_cdr(statics)).ok());
+  EXPECT_EQ(*(*node)->spin_once(), 1);  // no odometry needed
+  const auto result = (*node)->finish();
+  ASSERT_TRUE(result.ok());
+  EXPECT_FALSE((*node)->latest_odometry().has_value());
+}
+
 TEST_F(SlamNodeInputs, AScanStampedBeforeTheLastOneWaitsForItsOwnOdometry) {
   // Real logs' stamps go backwards now and then (265 times in the Intel raw log); DDS may deliver
   // such a scan before its odometry. It must not take the odometry around it from older messages.
@@ -236,6 +399,9 @@ TEST(SlamNode, InvalidOptionsAndNamespacesAreRefused) {
   bad.map_period_wall_s = 0.0;
   EXPECT_EQ(SlamNode::create(bad, *t).error().kind, ErrorKind::kUsage);
   EXPECT_EQ(SlamNode::create({.ns = "/r 1"}, *t).error().kind, ErrorKind::kInput);
+  SlamNodeOptions base_with_odometry;
+  base_with_odometry.base_frame = "base_link";  // only for scans alone
+  EXPECT_EQ(SlamNode::create(base_with_odometry, *t).error().kind, ErrorKind::kUsage);
   LaserLog empty;
   EXPECT_FALSE(LogPlayer::create(empty, {}, *t).ok());
 }

@@ -5,6 +5,8 @@
 //   <ns>/odom nav_msgs/Odometry (odom -> base_link: the scan's odometry pose),
 //   <ns>/scan sensor_msgs/LaserScan (frame laser), and /clock;
 // once at the start, /tf_static base_link -> laser (the first scan's laser_in_robot).
+// A log of scans alone (LaserLog::has_odometry false) is played without <ns>/odom, as a robot
+// without odometry publishes it, and without the static transform when its laser is the robot.
 // Frames are prefixed with the namespace's name ("r1/odom") when one is given.
 #include <cstdint>
 #include <memory>

@@ -11,6 +11,9 @@
 // as the bag reader does. So a scan and an odometry message with the same stamp, as `tessera
 // play` sends them, give the offline pipeline's input exactly, in whatever order DDS delivers
 // the two topics and even where a log's stamps go backwards.
+// Without odometry (ScanInputOptions::use_odometry off: a robot that has none, mapped from its
+// scans alone, decision 0034) <ns>/odom is not subscribed and a scan is ready once the laser's
+// place on the robot is known.
 #include <chrono>
 #include <cstdint>
 #include <memory>
@@ -42,12 +45,25 @@ struct ReadyScan {
   std::chrono::steady_clock::time_point received{};  // when it came off the transport
 };
 
+struct ScanInputOptions {
+  /// Scans waiting for odometry, for their laser transform or for the caller: beyond this, the
+  /// oldest is dropped and counted.
+  std::uint32_t queue_depth = 2000;
+  /// False: scans alone. Each scan comes with an identity odometry, for a pipeline that does not
+  /// use it (slam::LaserSlamOptions::use_odometry off).
+  bool use_odometry = true;
+  /// Without odometry, the robot frame, where /tf_static or /tf place the laser; empty: the
+  /// laser's own frame is the robot. (With odometry the robot frame is the odometry's
+  /// child_frame_id.)
+  std::string base_frame{};
+};
+
 class ScanInput {
  public:
   /// kInput error for a namespace that is no ROS 2 name; the transport's errors otherwise.
-  /// `transport` must outlive the input. Precondition: queue_depth > 0.
+  /// `transport` must outlive the input. Precondition: options.queue_depth > 0.
   [[nodiscard]] static Result<std::unique_ptr<ScanInput>> create(const std::string& ns,
-                                                                 std::uint32_t queue_depth,
+                                                                 const ScanInputOptions& options,
                                                                  net::Transport& transport);
   ~ScanInput();
   ScanInput(const ScanInput&) = delete;
@@ -60,7 +76,9 @@ class ScanInput {
   [[nodiscard]] std::optional<ReadyScan> next(bool flush);
 
   [[nodiscard]] const ScanInputStats& stats() const;
-  /// The odometry's frame and the robot's (from the first odometry message); empty before it.
+  /// The odometry's frame (from the first odometry message); empty before it. Without odometry,
+  /// the robot frame of the scans returned so far: the frame whose pose in the map is the
+  /// robot's (REP-105's map -> odom becomes map -> that frame).
   [[nodiscard]] const std::string& odom_frame() const;
   /// The newest odometry message's T_odom_base and stamp; nullopt before the first.
   [[nodiscard]] std::optional<PoseAtNs> latest_odometry() const;

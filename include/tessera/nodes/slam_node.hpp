@@ -2,10 +2,12 @@
 // Live laser SLAM as a ROS 2 node (issue 14), the pipeline of slam/laser_slam.hpp fed from topics
 // instead of a file. In namespace `ns` ("/r1", or "" for none):
 //   subscribes <ns>/scan, <ns>/odom, /tf_static and /tf, paired as nodes/scan_input.hpp says
-//              (a scan is added once its odometry is known)
+//              (a scan is added once its odometry is known); with slam.use_odometry off, <ns>/scan
+//              and the tf alone (scans alone, decision 0034)
 //   publishes  <ns>/map nav_msgs/OccupancyGrid (reliable, transient local: a late viewer gets it)
-//              at least once per map_period_wall_s while scans arrive, /tf map -> odom (REP-105),
-//              and <ns>/pose geometry_msgs/PoseWithCovarianceStamped (T_map_base per scan).
+//              at least once per map_period_wall_s while scans arrive, /tf map -> odom (REP-105;
+//              without odometry map -> the robot frame), and <ns>/pose
+//              geometry_msgs/PoseWithCovarianceStamped (T_map_base per scan).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -31,6 +33,9 @@ struct SlamNodeOptions {
   /// Scans waiting for odometry or for SLAM: beyond this, the oldest is dropped and counted.
   std::uint32_t queue_depth = 2000;
   slam::LaserSlamOptions slam{};
+  /// With slam.use_odometry off: the robot frame, where the tf places the laser; empty: the
+  /// laser's own frame (ScanInputOptions::base_frame).
+  std::string base_frame{};
 };
 
 /// What came in (ScanInputStats) and what became of it.
@@ -69,6 +74,9 @@ class SlamNode {
   [[nodiscard]] const std::vector<double>& map_latencies_s() const;
   /// T_map_odom after the last scan added (REP-105's map -> odom); identity before the first.
   [[nodiscard]] Pose2 T_map_odom() const;
+  /// The child frame of the map -> odom transform: the odometry's frame, or without odometry the
+  /// robot frame (ScanInput::odom_frame); empty before the first scan.
+  [[nodiscard]] const std::string& odom_frame() const;
   /// The newest odometry message's T_odom_base and stamp; nullopt before the first. With
   /// T_map_odom() it gives the robot's pose between scans, at the odometry's rate.
   [[nodiscard]] std::optional<PoseAtNs> latest_odometry() const;

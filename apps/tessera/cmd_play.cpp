@@ -44,7 +44,8 @@ PlayCommand::PlayCommand(CLI::App& app) {
       "play",
       "Play a laser log or a ROS bag as ROS 2 topics on Cyclone DDS: <ns>/scan, <ns>/odom, /clock "
       "and /tf_static (base_link -> laser), each scan at its stamp scaled by --rate, once the "
-      "first subscriber of the scans has appeared.");
+      "first subscriber of the scans has appeared. A bag of scans alone is played without "
+      "<ns>/odom (and without base_link).");
   sub_->add_option("log", log_,
                    "CARMEN log (.clf/.log: FLASER, ROBOTLASER1, RAWLASER1) or ROS bag (.bag, .db3, "
                    ".mcap or a ROS 2 bag folder)")

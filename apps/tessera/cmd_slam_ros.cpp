@@ -1,6 +1,7 @@
 // tessera slam --ros: the live SLAM node (nodes/slam_node.hpp) on Cyclone DDS. It maps what
 // arrives on <ns>/scan and <ns>/odom until Ctrl-C, SIGTERM or --idle-exit-s without a scan, then
-// writes what `tessera slam --log` writes, with the node's message counts in report.json.
+// writes what `tessera slam --log` writes, with the node's message counts in report.json. With
+// --no-odometry it maps <ns>/scan alone (a robot without odometry, decision 0034).
 #include <fmt/format.h>
 
 #include <chrono>
@@ -30,7 +31,9 @@ nlohmann::json node_stats_json(const nodes::SlamNodeStats& s) {
 void SlamCommand::add_ros_options() {
   sub_->add_flag("--ros", ros_,
                  "Live SLAM node on Cyclone DDS: subscribe <ns>/scan, <ns>/odom, /tf, /tf_static; "
-                 "publish <ns>/map, <ns>/pose and map -> odom on /tf");
+                 "publish <ns>/map, <ns>/pose and map -> odom on /tf (with --no-odometry: "
+                 "<ns>/scan and the tf alone, and map -> the robot frame, --base-frame or the "
+                 "laser's)");
   add_live_node_options(*sub_, ns_, domain_, network_, idle_exit_s_);
 }
 
@@ -39,12 +42,15 @@ int SlamCommand::run_ros() const {
     return report_error(usage_error("--ros maps the topics: give no --log, --bag or --world"));
   }
   if (save_) return report_error(usage_error("--save saves a --log, --bag or --world run"));
-  if (input_.no_odometry) {
+  if (!input_.base_frame.empty() && !input_.no_odometry) {
     return report_error(usage_error(
-        "--no-odometry maps a --log or --bag; the live node pairs each scan with <ns>/odom"));
+        "--ros takes --base-frame with --no-odometry; with odometry the robot frame is the "
+        "odometry's child frame"));
   }
   nodes::SlamNodeOptions options;
   options.ns = ns_;
+  options.slam.use_odometry = !input_.no_odometry;
+  options.base_frame = input_.base_frame;
   options.slam.loop_closure = !no_loop_closure_;
   options.slam.map_resolution_m = cell_m_.value_or(0.05);
   std::optional<std::vector<Relation>> relations;
@@ -69,13 +75,21 @@ int SlamCommand::run_ros() const {
       });
   if (!ran.ok()) return report_error(ran.error());
   Result<slam::LaserSlamResult> result = (*node)->finish();
-  if (!result.ok()) return report_error(result.error());
+  if (!result.ok()) {
+    Error error = result.error();
+    const nodes::SlamNodeStats& st = live.stats();
+    if (options.slam.use_odometry && st.scans_received > 0 && st.odometry_received == 0) {
+      error.message += "; --no-odometry maps them";
+    }
+    return report_error(error);
+  }
   const double wall_s = seconds_since(t0);
   const slam::LaserSlamResult& r = *result;
 
   nlohmann::json report = {{"options", slam_options_json(options.slam, "ros", ns_)},
                            {"slam", slam_stats_json(r, LaserLog{})},
                            {"ros", node_stats_json((*node)->stats())}};
+  if (!options.slam.use_odometry) report["options"]["base_frame"] = (*node)->odom_frame();
   const double duration_s =
       r.trajectory.empty() ? 0.0 : r.trajectory.back().t_s - r.trajectory.front().t_s;
   report.update(core_report({"slam", std::nullopt, report["options"], wall_s, duration_s}));

@@ -21,11 +21,13 @@ void LaserInput::add_options(CLI::App& command, bool with_no_odometry) {
                      "--bag: the nav_msgs/Odometry topic (needed when there are several; without "
                      "one, /tf's odom -> base is the odometry)");
   command.add_option("--base-frame", base_frame,
-                     "--bag: the robot frame (default: the odometry's child_frame_id)");
+                     "--bag: the robot frame (default: the odometry's child_frame_id); "
+                     "--ros --no-odometry: the robot frame (default: the laser's)");
   if (with_no_odometry) {
     command.add_flag("--no-odometry", no_odometry,
                      "Ignore the log's odometry: match the scans alone (for odometry that cannot "
-                     "be trusted; a bag without odometry is read so anyway)");
+                     "be trusted; a bag without odometry is read so anyway; with --ros, a robot "
+                     "that publishes no <ns>/odom)");
   }
   command
       .add_option("--from-s", from_s,

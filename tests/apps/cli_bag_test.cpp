@@ -169,9 +169,6 @@ TEST(CliBag, WithoutOdometryTheDriveSquareBagIsMappedAsWithIt) {
       run_cli("slam --no-odometry --quiet --out " + (dir.path() / "none").string());
   EXPECT_EQ(no_input.exit_code, 2) << no_input.output;
   EXPECT_THAT(no_input.output, HasSubstr("--no-odometry is about a --log or --bag"));
-  const support::CliRun live = run_cli("slam --ros --no-odometry --quiet");
-  EXPECT_EQ(live.exit_code, 2) << live.output;
-  EXPECT_THAT(live.output, HasSubstr("the live node pairs each scan with <ns>/odom"));
 }
 
 TEST(CliBag, InfoOnALegacyBagSaysItIsFormat12) {

@@ -52,10 +52,31 @@ TEST(CliSlamRos, PlayedBagScansAreAllMappedByTheLiveNode) {
   EXPECT_EQ(run.report["ros"]["scans_added"], 153);
 }
 
+// A hand-held laser's bag (scans alone): played without odometry, mapped by the node from its
+// scans alone, as `slam --bag` maps it offline (360 scans, 221 nodes, 85 loop closures when this
+// was written).
+TEST(CliSlamRos, ABagOfScansAloneIsMappedLiveWithoutOdometry) {
+  const auto bag = support::data_path("bags/laser_scan_matcher_demo.bag");
+  TESSERA_REQUIRE_DATA(bag);
+  const support::TempDir dir;
+  const LivePlay run =
+      support::play_into_node(dir, "slam --ros --no-odometry", bag.string() + " --rate 10");
+  EXPECT_EQ(run.play.exit_code, 0) << run.play.output;
+  ASSERT_FALSE(run.report.is_null()) << "no report; slam said: " << run.node_said;
+  EXPECT_EQ(run.report["options"]["use_odometry"], false);
+  EXPECT_EQ(run.report["options"]["base_frame"], "laser");
+  EXPECT_EQ(run.report["ros"]["scans_added"], 360);
+  EXPECT_EQ(run.report["ros"]["odometry_received"], 0);
+  EXPECT_GT(run.report["slam"]["loop_closures"].get<int>(), 20);
+}
+
 TEST(CliSlamRos, BadCombinationsAndLogsAreErrors) {
   const auto both = support::run_cli("slam --ros --log x.clf");
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_THAT(both.output, HasSubstr("--ros maps the topics"));
+  const auto base = support::run_cli("slam --ros --base-frame base_link");
+  EXPECT_EQ(base.exit_code, 2);
+  EXPECT_THAT(base.output, HasSubstr("--ros takes --base-frame with --no-odometry"));
   const support::TempDir dir;
   std::ofstream(dir.path() / "bad.clf") << "FLASER 3 1.0 oops\n";
   const auto bad = support::run_cli("play " + (dir.path() / "bad.clf").string());

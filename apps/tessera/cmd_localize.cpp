@@ -58,7 +58,7 @@ LocalizeCommand::LocalizeCommand(CLI::App& app) {
       "--out");
   sub_->add_option("--session", session_, "Session file (.tsm) whose map to localize in")
       ->required();
-  input_.add_options(*sub_, /*with_no_odometry=*/false);
+  input_.add_options(*sub_);
   sub_->add_option("--initial-pose", initial_pose_,
                    "X,Y[,THETA] (m, m, rad) of the first scan in the map (default: search)");
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
@@ -115,7 +115,9 @@ int LocalizeCommand::run() const {
   }
   progress.finish();
   return write_outputs(scans, localizer, input_.name(),
-                       scan_matched ? "scan matching (the input has none)" : "the input",
+                       !scan_matched        ? "the input"
+                       : input_.no_odometry ? "scan matching (--no-odometry)"
+                                            : "scan matching (the input has none)",
                        seconds_since(t0), data_duration_s(*log), setup->relations, nullptr);
 }
 

@@ -18,7 +18,9 @@ void LocalizeCommand::add_ros_options() {
   sub_->add_flag("--ros", ros_,
                  "Live localization node on Cyclone DDS: subscribe <ns>/scan, <ns>/odom, /tf, "
                  "/tf_static; publish <ns>/map (the session's map, once), <ns>/pose with its "
-                 "covariance and map -> odom on /tf for every scan that has a pose");
+                 "covariance and map -> odom on /tf for every scan that has a pose (with "
+                 "--no-odometry: <ns>/scan and the tf alone, the robot followed by its scans, "
+                 "and map -> the robot frame)");
   add_live_node_options(*sub_, ns_, domain_, network_, idle_exit_s_);
 }
 
@@ -26,12 +28,14 @@ int LocalizeCommand::run_ros() const {
   if (input_.given()) {
     return report_error(usage_error("--ros localizes the topics: give no --log or --bag"));
   }
-  if (Status s = input_.check(); !s) return report_error(s.error());  // --from-s without input
+  if (Status s = input_.check(/*live=*/true); !s) return report_error(s.error());
   Result<Setup> setup = read_setup();
   if (!setup) return report_error(setup.error());
   nodes::LocalizerNodeOptions options;
   options.ns = ns_;
   options.initial_pose = setup->initial_pose;
+  options.odometry_from_scans = input_.no_odometry;
+  options.base_frame = input_.base_frame;
   Result<slam::ProbabilityGrid> map =
       session_frozen_map(setup->session, options.localizer, session_.string());
   if (!map) return report_error(map.error());
@@ -55,15 +59,25 @@ int LocalizeCommand::run_ros() const {
   if (Status s = (*node)->finish(); !s) return report_error(s.error());
   const std::vector<slam::LocalizedScan>& scans = (*node)->scans();
   if (scans.empty()) {
-    return report_error(input_error("localize --ros: no scan with odometry arrived"));
+    const nodes::LocalizerNodeStats& st = (*node)->stats();
+    if (options.odometry_from_scans)
+      return report_error(input_error("localize --ros: no scan arrived"));
+    return report_error(input_error(
+        st.scans_received > 0 && st.odometry_received == 0
+            ? fmt::format("localize --ros: no scan with odometry arrived ({} scans and no "
+                          "odometry; --no-odometry follows the robot by its scans)",
+                          st.scans_received)
+            : std::string("localize --ros: no scan with odometry arrived")));
   }
   const nodes::LocalizerNodeStats& st = (*node)->stats();
   nlohmann::json ros = scan_input_json(st);
   ros["scans_localized"] = st.scans_localized;
   ros["scans_lost"] = st.scans_lost;
   ros["poses_unsure"] = st.poses_unsure;
-  return write_outputs(scans, (*node)->localizer(), "ros", "the odometry topic", seconds_since(t0),
-                       scans.back().t_s - scans.front().t_s, setup->relations, &ros);
+  return write_outputs(
+      scans, (*node)->localizer(), "ros",
+      options.odometry_from_scans ? "scan matching (--no-odometry)" : "the odometry topic",
+      seconds_since(t0), scans.back().t_s - scans.front().t_s, setup->relations, &ros);
 }
 
 }  // namespace tessera::cli

@@ -35,7 +35,7 @@ SlamCommand::SlamCommand(CLI::App& app) {
       "laser log (--log), or on a simulated run in a world (--world / --builtin) scored against "
       "its ground truth; writes map.yaml + map.pgm, map.png, trajectory.txt (one pose per scan), "
       "graph.g2o and report.json to --out");
-  input_.add_options(*sub_, /*with_no_odometry=*/true);
+  input_.add_options(*sub_);
   add_world_options(*sub_, world_);
   sub_->add_option("--seed", seed_, "Simulated run: seed of the start, odometry and range noise")
       ->capture_default_str();

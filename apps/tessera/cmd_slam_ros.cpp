@@ -42,11 +42,7 @@ int SlamCommand::run_ros() const {
     return report_error(usage_error("--ros maps the topics: give no --log, --bag or --world"));
   }
   if (save_) return report_error(usage_error("--save saves a --log, --bag or --world run"));
-  if (!input_.base_frame.empty() && !input_.no_odometry) {
-    return report_error(usage_error(
-        "--ros takes --base-frame with --no-odometry; with odometry the robot frame is the "
-        "odometry's child frame"));
-  }
+  if (Status s = input_.check(/*live=*/true); !s) return report_error(s.error());
   nodes::SlamNodeOptions options;
   options.ns = ns_;
   options.slam.use_odometry = !input_.no_odometry;

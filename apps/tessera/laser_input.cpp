@@ -10,7 +10,7 @@
 
 namespace tessera::cli {
 
-void LaserInput::add_options(CLI::App& command, bool with_no_odometry) {
+void LaserInput::add_options(CLI::App& command) {
   command.add_option("--log", log, "Laser log: CARMEN .clf/.log (FLASER, ROBOTLASER1, RAWLASER1)");
   command.add_option("--bag", bag,
                      "ROS bag: a ROS 1 .bag, a rosbag2 folder, a .db3 or an .mcap file (LaserScan, "
@@ -23,12 +23,10 @@ void LaserInput::add_options(CLI::App& command, bool with_no_odometry) {
   command.add_option("--base-frame", base_frame,
                      "--bag: the robot frame (default: the odometry's child_frame_id); "
                      "--ros --no-odometry: the robot frame (default: the laser's)");
-  if (with_no_odometry) {
-    command.add_flag("--no-odometry", no_odometry,
-                     "Ignore the log's odometry: match the scans alone (for odometry that cannot "
-                     "be trusted; a bag without odometry is read so anyway; with --ros, a robot "
-                     "that publishes no <ns>/odom)");
-  }
+  command.add_flag("--no-odometry", no_odometry,
+                   "Ignore the log's odometry: use the scans alone (for odometry that cannot be "
+                   "trusted; a bag without odometry is read so anyway; with --ros, a robot that "
+                   "publishes no <ns>/odom)");
   command
       .add_option("--from-s", from_s,
                   "Use the scans from this many seconds after the first one (--log, --bag)")
@@ -43,7 +41,21 @@ std::string LaserInput::name() const {
   return log ? log->string() : bag ? bag->string() : std::string{};
 }
 
-Status LaserInput::check() const {
+Status LaserInput::check(bool live) const {
+  if (live) {
+    if (!scan_topic.empty() || !odom_topic.empty()) {
+      return usage_error(
+          "--scan-topic and --odom-topic choose a bag's topics; --ros reads "
+          "<ns>/scan and <ns>/odom");
+    }
+    if (!base_frame.empty() && !no_odometry) {
+      return usage_error(
+          "--ros takes --base-frame with --no-odometry; with odometry the robot frame is the "
+          "odometry's child frame");
+    }
+    if (from_s || to_s) return usage_error("--from-s and --to-s cut a --log or --bag");
+    return Ok{};
+  }
   if (log && bag) return usage_error("give --log or --bag, not both");
   if (!bag && (!scan_topic.empty() || !odom_topic.empty() || !base_frame.empty())) {
     return usage_error("--scan-topic, --odom-topic and --base-frame need --bag");

@@ -18,19 +18,19 @@ struct LaserInput {
   std::optional<std::filesystem::path> bag;
   std::string scan_topic;  // --bag: empty chooses by type
   std::string odom_topic;
-  std::string base_frame;  // --bag: empty is the odometry's child frame
+  std::string base_frame;  // --bag: empty is the odometry's child frame; --ros: with no_odometry
   std::optional<double> from_s;
   std::optional<double> to_s;
   bool no_odometry = false;  // --no-odometry: read the log as if it recorded none
 
-  /// with_no_odometry: also --no-odometry (slam maps from scans alone; localize cannot).
-  void add_options(CLI::App& command, bool with_no_odometry);
+  void add_options(CLI::App& command);
   [[nodiscard]] bool given() const { return log || bag; }
   /// The file read.
   [[nodiscard]] std::string name() const;
   /// Usage error for options that do not go together (topics without a bag, both inputs, an
-  /// empty window).
-  [[nodiscard]] Status check() const;
+  /// empty window). `live`: the input is ROS 2 topics (--ros; the caller refuses a file), which
+  /// take --no-odometry and, with it, --base-frame, but no bag topic or window.
+  [[nodiscard]] Status check(bool live = false) const;
   /// Reads the input and cuts it to the window; `bag_report` (may be null) gets a bag's topics
   /// and frames. Input error when the window holds no scan. With no_odometry the log comes back
   /// without odometry (LaserLog::has_odometry false, every scan's odometry the identity).

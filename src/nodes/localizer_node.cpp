@@ -32,6 +32,7 @@ struct LocalizerNode::State {
   mutable LocalizerNodeStats stats;  // the input's part is copied in when asked
   std::vector<slam::LocalizedScan> scans;
   PoseOutputs outputs;
+  std::unique_ptr<slam::ScanMatchedOdometry> scan_odometry;  // odometry_from_scans
 
   State(slam::ProbabilityGrid map, const LocalizerNodeOptions& o, Transport& t,
         std::unique_ptr<ScanInput> in, PoseOutputs out)
@@ -41,6 +42,7 @@ struct LocalizerNode::State {
         localizer(std::move(map), o.localizer),
         outputs(std::move(out)) {
     if (o.initial_pose) localizer.set_pose(*o.initial_pose);
+    if (o.odometry_from_scans) scan_odometry = std::make_unique<slam::ScanMatchedOdometry>();
   }
 
   // Localizes the next scan whose odometry is known (all that wait, with `flush`); false when
@@ -48,6 +50,15 @@ struct LocalizerNode::State {
   Result<bool> take_next(bool flush) {
     std::optional<ReadyScan> ready = input->next(flush);
     if (!ready) return false;
+    // Without odometry the scans make one, and map -> the robot frame is published: T_odom_base
+    // is then the identity (the input's odom_frame() is the robot frame).
+    Pose2 T_odom_base = ready->scan.odometry;
+    if (scan_odometry) {
+      Result<Pose2> made = scan_odometry->add(ready->scan);
+      if (!made.ok()) return made.error();
+      ready->scan.odometry = *made;
+      T_odom_base = Pose2{};
+    }
     const slam::LocalizedScan& s = scans.emplace_back(localizer.add_scan(ready->scan));
     if (s.state == slam::LocalizationState::kLost) {
       ++stats.scans_lost;
@@ -61,7 +72,7 @@ struct LocalizerNode::State {
                                     options.unsure_variance_rad2)
                         .asDiagonal();
     }
-    if (Status p = outputs.publish_pose(ready->stamp_ns, s.T_map_robot, ready->scan.odometry,
+    if (Status p = outputs.publish_pose(ready->stamp_ns, s.T_map_robot, T_odom_base,
                                         input->odom_frame(), ros_covariance(covariance));
         !p.ok()) {
       return p.error();
@@ -84,8 +95,17 @@ Result<std::unique_ptr<LocalizerNode>> LocalizerNode::create(slam::ProbabilityGr
       !(options.unsure_variance_rad2 >= 0.0)) {
     return usage_error("localizer node: queue_depth must be > 0, unsure_variance_* >= 0");
   }
+  if (!options.odometry_from_scans && !options.base_frame.empty()) {
+    return usage_error(
+        "localizer node: base_frame is for scans alone; with odometry the robot frame is the "
+        "odometry's child frame");
+  }
   Result<std::unique_ptr<ScanInput>> input =
-      ScanInput::create(options.ns, {.queue_depth = options.queue_depth}, transport);
+      ScanInput::create(options.ns,
+                        {.queue_depth = options.queue_depth,
+                         .use_odometry = !options.odometry_from_scans,
+                         .base_frame = options.base_frame},
+                        transport);
   if (!input.ok()) return input.error();
   Result<PoseOutputs> outputs = PoseOutputs::advertise(transport, options.ns, options.map_frame);
   if (!outputs.ok()) return outputs.error();

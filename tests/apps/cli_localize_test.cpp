@@ -125,6 +125,49 @@ TEST(CliLocalize, TheLiveNodeLocalizesPlayedScansAsTheOfflineRunDoes) {
   EXPECT_THAT(both.output, HasSubstr("--ros localizes the topics"));
 }
 
+// The same window with the robot's odometry set aside (a robot without one): `localize --ros
+// --no-odometry` reads the scans and the tf alone and follows the robot between scans by odometry
+// made from its scans, as `localize --no-odometry` does offline; map -> base_link on /tf.
+TEST(CliLocalize, WithoutOdometryTheLiveNodeFollowsTheRobotByItsScans) {
+  TESSERA_REQUIRE_DATA(intel_log());
+  const std::string session = (intel_session() / "intel.tsm").string();
+  const TempDir dir;
+  const auto offline = run_cli("localize --session " + session + " --log " + intel_log().string() +
+                               " --from-s 30 --to-s 60 --no-odometry " + "--quiet --out " +
+                               (dir.path() / "offline").string());
+  ASSERT_EQ(offline.exit_code, 0) << offline.output;
+  const nlohmann::json offline_report =
+      nlohmann::json::parse(read_bytes(dir.path() / "offline" / "report.json"));
+  EXPECT_EQ(offline_report["options"]["odometry"], "scan matching (--no-odometry)");
+  const support::LivePlay live = support::play_into_node(
+      dir, "localize --ros --no-odometry --base-frame base_link --session " + session,
+      intel_log().string() + " --from-s 30 --to-s 60 --rate 10");
+  ASSERT_EQ(live.play.exit_code, 0) << live.play.output;
+  ASSERT_FALSE(live.report.is_null()) << "no report; localize said: " << live.node_said;
+  EXPECT_EQ(live.report["options"]["odometry"], "scan matching (--no-odometry)");
+  const nlohmann::json& ros = live.report["ros"];
+  EXPECT_EQ(ros["scans_received"], offline_report["localization"]["scans"]);
+  EXPECT_EQ(ros["odometry_received"], 0);
+  EXPECT_GT(ros["scans_localized"].get<int>(), ros["scans_received"].get<int>() / 2);
+  const Result<std::vector<StampedPose2>> expected =
+      read_tum_trajectory(dir.path() / "offline" / "trajectory.txt");
+  const Result<std::vector<StampedPose2>> got =
+      read_tum_trajectory(dir.path() / "node" / "trajectory.txt");
+  ASSERT_TRUE(expected.ok() && got.ok());
+  std::size_t compared = 0;
+  for (const StampedPose2& p : *got) {
+    const auto same = std::find_if(expected->begin(), expected->end(),
+                                   [&](const StampedPose2& e) { return e.t_s == p.t_s; });
+    if (same == expected->end()) continue;
+    EXPECT_LT((same->pose.translation() - p.pose.translation()).norm(), 0.03) << p.t_s;
+    ++compared;
+  }
+  EXPECT_GE(compared + 10, expected->size());
+  const auto base_alone = run_cli("localize --ros --session " + session + " --base-frame b");
+  EXPECT_EQ(base_alone.exit_code, 2);
+  EXPECT_THAT(base_alone.output, HasSubstr("--ros takes --base-frame with --no-odometry"));
+}
+
 TEST(CliLocalize, BadInputIsOneLineAndWritesNothing) {
   TESSERA_REQUIRE_DATA(intel_log());
   const auto& session = intel_session();

@@ -77,6 +77,9 @@ TEST(CliSlamRos, BadCombinationsAndLogsAreErrors) {
   const auto base = support::run_cli("slam --ros --base-frame base_link");
   EXPECT_EQ(base.exit_code, 2);
   EXPECT_THAT(base.output, HasSubstr("--ros takes --base-frame with --no-odometry"));
+  const auto topic_live = support::run_cli("slam --ros --scan-topic /front");
+  EXPECT_EQ(topic_live.exit_code, 2);
+  EXPECT_THAT(topic_live.output, HasSubstr("--ros reads <ns>/scan and <ns>/odom"));
   const support::TempDir dir;
   std::ofstream(dir.path() / "bad.clf") << "FLASER 3 1.0 oops\n";
   const auto bad = support::run_cli("play " + (dir.path() / "bad.clf").string());

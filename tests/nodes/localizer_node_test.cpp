@@ -5,12 +5,15 @@
 #include <cmath>
 
 #include "support/map_at_truth.hpp"
+#include "support/scans_alone.hpp"
 #include "tessera/io/ros_message_encoders.hpp"
+#include "tessera/io/ros_messages.hpp"
 #include "tessera/net/in_process_transport.hpp"
 #include "tessera/nodes/log_player.hpp"
 #include "tessera/record/ros_conversions.hpp"
 #include "tessera/sim/builtin_world.hpp"
 #include "tessera/sim/laser_run.hpp"
+#include "tessera/slam/scan_matched_odometry.hpp"
 
 namespace tessera::nodes {
 namespace {
@@ -120,6 +123,73 @@ TEST(LocalizerNode, FindsAndTracksARobotFromTopicsAsTheOfflineLocalizerDoes) {
   EXPECT_EQ(maps[0].width, static_cast<std::uint32_t>(picture.geometry().width()));
 }
 
+// A robot without odometry (scans and the laser's place on base_link only): the node follows it
+// between scans by odometry made from its scans, as `localize` does offline with an input that has
+// none, and publishes map -> base_link.
+TEST(LocalizerNode, WithoutOdometryTheRobotIsFollowedByItsScans) {
+  const LaserLog log = support::scans_alone_as_received(office_run(21, 30.0).log, 300);
+  const SimulatedLaserRun truth_run = office_run(21, 30.0);
+  const slam::ProbabilityGrid map = office_map();
+  const OccupancyGrid picture = map.to_occupancy_grid(2);
+  Result<LaserLog> with_odometry = slam::with_scan_matched_odometry(log);
+  ASSERT_TRUE(with_odometry.ok()) << with_odometry.error().message;
+  slam::Localizer offline(map, slam::LocalizerOptions{});
+  std::vector<slam::LocalizedScan> expected;
+  for (const StampedScan& scan : with_odometry->scans) expected.push_back(offline.add_scan(scan));
+
+  net::InProcessBus bus;
+  auto player_side = bus.join();
+  auto node_side = bus.join();
+  auto listener = bus.join();
+  std::vector<std::string> tf_children;
+  ASSERT_TRUE(listener
+                  ->subscribe({"/tf", std::string(kRos2TfMessage), Qos::tf()},
+                              [&](std::span<const std::uint8_t> cdr) {
+                                Result<TfMessage> m = decode_tf_message(cdr, RosEncoding::kCdr);
+                                if (!m.ok()) return;
+                                for (const auto& t : m->transforms) {
+                                  tf_children.push_back(t.child_frame_id);
+                                }
+                              })
+                  .ok());
+  auto player = LogPlayer::create(log, {.ns = "/r1"}, *player_side);
+  ASSERT_TRUE(player.ok());
+  LocalizerNodeOptions options{.ns = "/r1"};
+  options.odometry_from_scans = true;
+  options.base_frame = "r1/base_link";
+  auto node = LocalizerNode::create(map, picture, options, *node_side);
+  ASSERT_TRUE(node.ok()) << node.error().message;
+  while (!(*player)->done()) {
+    ASSERT_TRUE((*player)->publish_next().ok());
+    ASSERT_TRUE((*node)->spin_once().ok());
+    listener->poll();
+  }
+  ASSERT_TRUE((*node)->finish().ok());
+  listener->poll();
+
+  const LocalizerNodeStats& stats = (*node)->stats();
+  EXPECT_EQ(stats.scans_received, log.scans.size());
+  EXPECT_EQ(stats.odometry_received, 0U);
+  EXPECT_GT(stats.scans_localized, log.scans.size() * 8 / 10);
+  ASSERT_FALSE(tf_children.empty());
+  EXPECT_EQ(tf_children.back(), "r1/base_link");
+  const std::vector<slam::LocalizedScan>& live = (*node)->scans();
+  ASSERT_EQ(live.size(), expected.size());
+  for (std::size_t i = 0; i < live.size(); ++i) {
+    ASSERT_EQ(live[i].state, expected[i].state) << "scan " << i;
+    if (live[i].state == slam::LocalizationState::kLost) continue;
+    EXPECT_NEAR(live[i].T_map_robot.x, expected[i].T_map_robot.x, 1e-6);
+    EXPECT_NEAR(live[i].T_map_robot.y, expected[i].T_map_robot.y, 1e-6);
+  }
+  for (std::size_t i = live.size() / 2; i < live.size(); ++i) {
+    if (!live[i].confident) continue;
+    EXPECT_LT(std::hypot(live[i].T_map_robot.x - truth_run.truth[i].pose.x,
+                         live[i].T_map_robot.y - truth_run.truth[i].pose.y),
+              0.1)
+        << "scan " << i;
+  }
+}
+
 TEST(LocalizerNode, AnInitialPoseIsTrackedFromTheFirstScanAndBadOptionsAreRefused) {
   const SimulatedLaserRun run = office_run(22, 5.0);
   const slam::ProbabilityGrid map = office_map();
@@ -148,6 +218,11 @@ TEST(LocalizerNode, AnInitialPoseIsTrackedFromTheFirstScanAndBadOptionsAreRefuse
   auto bad_ns = LocalizerNode::create(map, picture, {.ns = "/1 bad"}, *bus.join());
   ASSERT_FALSE(bad_ns.ok());
   EXPECT_EQ(bad_ns.error().kind, ErrorKind::kInput);
+  LocalizerNodeOptions base_with_odometry;
+  base_with_odometry.base_frame = "base_link";  // only for scans alone
+  auto base = LocalizerNode::create(map, picture, base_with_odometry, *bus.join());
+  ASSERT_FALSE(base.ok());
+  EXPECT_EQ(base.error().kind, ErrorKind::kUsage);
 }
 
 }  // namespace

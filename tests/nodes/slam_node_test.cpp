@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "tessera/io/robot_bag.hpp"
+#include "support/scans_alone.hpp"
 #include "tessera/io/ros_message_encoders.hpp"
 #include "tessera/io/ros_messages.hpp"
 #include "tessera/net/in_process_transport.hpp"
@@ -87,23 +87,8 @@ TEST(SlamNode, ALogPlayedOverTopicsGivesTheOfflineTrajectory) {
   EXPECT_EQ(maps[0].width, static_cast<std::uint32_t>(live->map.geometry().width()));
 }
 
-// The office run as a robot without odometry would log it: scans alone (decision 0034), each
-// as it comes off the topic (ranges and angles in float32, stamps in nanoseconds), so that the
-// offline run and the node see the same numbers. Without odometry every prediction is the last
-// match's step, so a rounding difference would carry on from scan to scan (millimetres). The first
-// 200 scans (20 s) keep the test short.
-LaserLog scans_alone(LaserLog log) {
-  log.has_odometry = false;
-  if (log.scans.size() > 200) log.scans.resize(200);
-  for (StampedScan& s : log.scans) {
-    s.odometry = Pose2{};
-    const std::int64_t t_ns = to_ns(s.t_s);
-    int no_return = 0;
-    s.scan = *range_scan_of(laser_scan_message(s.scan, t_ns, "laser"), no_return);
-    s.t_s = 1e-9 * static_cast<double>(t_ns);
-  }
-  return log;
-}
+// The office run's first 200 scans (20 s) as a robot without odometry sends them.
+LaserLog scans_alone(const LaserLog& log) { return support::scans_alone_as_received(log, 200); }
 
 // Plays `log` into a scans-alone SLAM node whose robot frame is `base_frame`; the trajectory, and
 // how many odometry messages a listener on /r1/odom heard.

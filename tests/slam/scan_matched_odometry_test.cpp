@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "laser_test_world.hpp"
 #include "office_run.hpp"
 #include "tessera/core/rng.hpp"
@@ -39,6 +41,46 @@ TEST(ScanMatchedOdometry, IsLocalSlamAloneAndIgnoresTheLogsOwnOdometry) {
   Result<AbsoluteTrajectoryError> ate = absolute_trajectory_error(odometry, run.truth);
   ASSERT_TRUE(ate.ok()) << ate.error().message;
   EXPECT_LT(ate->trans_m.rmse, 0.1);
+}
+
+// Live, scan by scan: the same poses as the whole-log function until the first restart, and after
+// restarts every 50 scans (the default is every 3,000) the poses go on without a jump and still
+// follow the robot.
+TEST(ScanMatchedOdometry, RestartsKeepThePosesGoing) {
+  const SimulatedLaserRun& run = testing::office_run();
+  Result<LaserLog> whole = with_scan_matched_odometry(run.log, testing::small_submaps());
+  ASSERT_TRUE(whole.ok()) << whole.error().message;
+  ScanMatchedOdometry live(testing::small_submaps(), 50);
+  std::vector<StampedPose2> poses;
+  for (const StampedScan& scan : run.log.scans) {
+    Result<Pose2> pose = live.add(scan);
+    ASSERT_TRUE(pose.ok()) << pose.error().message;
+    poses.push_back({scan.t_s, *pose});
+  }
+  ASSERT_GT(poses.size(), 200U);
+  for (std::size_t i = 0; i < 50; ++i) {
+    EXPECT_EQ(poses[i].pose.x, whole->scans[i].odometry.x);
+    EXPECT_EQ(poses[i].pose.theta, whole->scans[i].odometry.theta);
+  }
+  double worst_step_difference_m = 0.0;
+  for (std::size_t i = 1; i < poses.size(); ++i) {
+    const Pose2 step = between(poses[i - 1].pose, poses[i].pose);
+    const Pose2 whole_step = between(whole->scans[i - 1].odometry, whole->scans[i].odometry);
+    worst_step_difference_m =
+        std::max(worst_step_difference_m, std::hypot(step.x - whole_step.x, step.y - whole_step.y));
+  }
+  EXPECT_LT(worst_step_difference_m, 0.03);
+  Result<AbsoluteTrajectoryError> ate = absolute_trajectory_error(poses, run.truth);
+  ASSERT_TRUE(ate.ok()) << ate.error().message;
+  EXPECT_LT(ate->trans_m.rmse, 0.15);
+}
+
+TEST(ScanMatchedOdometry, ALogWithoutScansIsAnInputError) {
+  LaserLog empty;
+  empty.has_odometry = false;
+  Result<LaserLog> made = with_scan_matched_odometry(empty);
+  ASSERT_FALSE(made.ok());
+  EXPECT_EQ(made.error().kind, ErrorKind::kInput);
 }
 
 }  // namespace

@@ -12,6 +12,9 @@
 //              refinement's covariance, so that a consumer weighing by covariance (a planner, an
 //              EKF) trusts it little. A robot not found yet, or lost, publishes nothing: a planner
 //              is never handed a guess.
+// A robot without odometry (odometry_from_scans): <ns>/odom is not read, the robot is followed
+// between scans by odometry made from the scans (slam::ScanMatchedOdometry, decision 0034), and
+// /tf carries map -> the robot frame.
 // The node keeps every scan's result for the run's outputs (about 150 bytes a scan).
 #include <cstdint>
 #include <memory>
@@ -24,6 +27,7 @@
 #include "tessera/net/transport.hpp"
 #include "tessera/nodes/scan_input.hpp"
 #include "tessera/slam/localizer.hpp"
+#include "tessera/slam/scan_matched_odometry.hpp"
 
 namespace tessera::nodes {
 
@@ -39,6 +43,12 @@ struct LocalizerNodeOptions {
   double unsure_variance_rad2 = 0.04;
   /// T_map_robot of the first scan; nullopt: found by global relocalization.
   std::optional<Pose2> initial_pose{};
+  /// Scans alone: the odometry is made from the scans (local SLAM alone, restarted every few
+  /// thousand scans so that memory stays bounded).
+  bool odometry_from_scans = false;
+  /// With odometry_from_scans: the robot frame, where the tf places the laser; empty: the
+  /// laser's own frame (ScanInputOptions::base_frame).
+  std::string base_frame{};
 };
 
 /// What came in (ScanInputStats) and what became of it.

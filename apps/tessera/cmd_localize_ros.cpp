@@ -60,8 +60,9 @@ int LocalizeCommand::run_ros() const {
   const std::vector<slam::LocalizedScan>& scans = (*node)->scans();
   if (scans.empty()) {
     const nodes::LocalizerNodeStats& st = (*node)->stats();
-    if (options.odometry_from_scans)
+    if (options.odometry_from_scans) {
       return report_error(input_error("localize --ros: no scan arrived"));
+    }
     return report_error(input_error(
         st.scans_received > 0 && st.odometry_received == 0
             ? fmt::format("localize --ros: no scan with odometry arrived ({} scans and no "

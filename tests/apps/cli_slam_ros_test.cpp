@@ -52,22 +52,23 @@ TEST(CliSlamRos, PlayedBagScansAreAllMappedByTheLiveNode) {
   EXPECT_EQ(run.report["ros"]["scans_added"], 153);
 }
 
-// A hand-held laser's bag (scans alone): played without odometry, mapped by the node from its
-// scans alone, as `slam --bag` maps it offline (360 scans, 221 nodes, 85 loop closures when this
-// was written).
+// A hand-held laser's bag (scans alone), its first 14 s (141 scans): played without odometry,
+// mapped by the node from its scans alone (the whole bag as `slam --bag` maps it offline,
+// trajectory for trajectory, when this was written: 360 scans, 221 nodes, 85 loop closures).
 TEST(CliSlamRos, ABagOfScansAloneIsMappedLiveWithoutOdometry) {
   const auto bag = support::data_path("bags/laser_scan_matcher_demo.bag");
   TESSERA_REQUIRE_DATA(bag);
   const support::TempDir dir;
-  const LivePlay run =
-      support::play_into_node(dir, "slam --ros --no-odometry", bag.string() + " --rate 10");
+  const LivePlay run = support::play_into_node(dir, "slam --ros --no-odometry",
+                                               bag.string() + " --to-s 14 --rate 10");
   EXPECT_EQ(run.play.exit_code, 0) << run.play.output;
+  EXPECT_THAT(run.play.output, HasSubstr("play: 141 scans published"));
   ASSERT_FALSE(run.report.is_null()) << "no report; slam said: " << run.node_said;
   EXPECT_EQ(run.report["options"]["use_odometry"], false);
   EXPECT_EQ(run.report["options"]["base_frame"], "laser");
-  EXPECT_EQ(run.report["ros"]["scans_added"], 360);
+  EXPECT_EQ(run.report["ros"]["scans_added"], 141);
   EXPECT_EQ(run.report["ros"]["odometry_received"], 0);
-  EXPECT_GT(run.report["slam"]["loop_closures"].get<int>(), 20);
+  EXPECT_GT(run.report["slam"]["loop_closures"].get<int>(), 0);
 }
 
 TEST(CliSlamRos, BadCombinationsAndLogsAreErrors) {

@@ -127,8 +127,8 @@ TEST(LocalizerNode, FindsAndTracksARobotFromTopicsAsTheOfflineLocalizerDoes) {
 // between scans by odometry made from its scans, as `localize` does offline with an input that has
 // none, and publishes map -> base_link.
 TEST(LocalizerNode, WithoutOdometryTheRobotIsFollowedByItsScans) {
-  const LaserLog log = support::scans_alone_as_received(office_run(21, 30.0).log, 300);
-  const SimulatedLaserRun truth_run = office_run(21, 30.0);
+  const SimulatedLaserRun truth_run = office_run(21, 15.0);
+  const LaserLog log = support::scans_alone_as_received(truth_run.log, 150);
   const slam::ProbabilityGrid map = office_map();
   const OccupancyGrid picture = map.to_occupancy_grid(2);
   Result<LaserLog> with_odometry = slam::with_scan_matched_odometry(log);

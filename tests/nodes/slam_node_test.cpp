@@ -87,8 +87,8 @@ TEST(SlamNode, ALogPlayedOverTopicsGivesTheOfflineTrajectory) {
   EXPECT_EQ(maps[0].width, static_cast<std::uint32_t>(live->map.geometry().width()));
 }
 
-// The office run's first 200 scans (20 s) as a robot without odometry sends them.
-LaserLog scans_alone(const LaserLog& log) { return support::scans_alone_as_received(log, 200); }
+// The office run's first 120 scans (12 s) as a robot without odometry sends them.
+LaserLog scans_alone(const LaserLog& log) { return support::scans_alone_as_received(log, 120); }
 
 // Plays `log` into a scans-alone SLAM node whose robot frame is `base_frame`; the trajectory, and
 // how many odometry messages a listener on /r1/odom heard.

@@ -48,16 +48,18 @@ TEST(ScanMatchedOdometry, IsLocalSlamAloneAndIgnoresTheLogsOwnOdometry) {
 // follow the robot.
 TEST(ScanMatchedOdometry, RestartsKeepThePosesGoing) {
   const SimulatedLaserRun& run = testing::office_run();
-  Result<LaserLog> whole = with_scan_matched_odometry(run.log, testing::small_submaps());
+  LaserLog log = run.log;
+  ASSERT_GT(log.scans.size(), 250U);
+  log.scans.resize(250);  // five restarts
+  Result<LaserLog> whole = with_scan_matched_odometry(log, testing::small_submaps());
   ASSERT_TRUE(whole.ok()) << whole.error().message;
   ScanMatchedOdometry live(testing::small_submaps(), 50);
   std::vector<StampedPose2> poses;
-  for (const StampedScan& scan : run.log.scans) {
+  for (const StampedScan& scan : log.scans) {
     Result<Pose2> pose = live.add(scan);
     ASSERT_TRUE(pose.ok()) << pose.error().message;
     poses.push_back({scan.t_s, *pose});
   }
-  ASSERT_GT(poses.size(), 200U);
   for (std::size_t i = 0; i < 50; ++i) {
     EXPECT_EQ(poses[i].pose.x, whole->scans[i].odometry.x);
     EXPECT_EQ(poses[i].pose.theta, whole->scans[i].odometry.theta);

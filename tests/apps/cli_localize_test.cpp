@@ -79,6 +79,26 @@ TEST(CliLocalize, FindsTheRobotInASavedSessionWithNoInitialPose) {
             loc["scans"].get<int>() + 1);
 }
 
+// The live node's trajectory (dir/node) against the offline run's (dir/offline): all but a few
+// scans (a global search may accept 0.5 s later live) at the same stamps, each within 3 cm.
+void expect_live_follows_offline(const TempDir& dir) {
+  const Result<std::vector<StampedPose2>> expected =
+      read_tum_trajectory(dir.path() / "offline" / "trajectory.txt");
+  const Result<std::vector<StampedPose2>> got =
+      read_tum_trajectory(dir.path() / "node" / "trajectory.txt");
+  ASSERT_TRUE(expected.ok() && got.ok());
+  EXPECT_GE(got->size() + 10, expected->size());
+  std::size_t compared = 0;
+  for (const StampedPose2& p : *got) {
+    const auto same = std::find_if(expected->begin(), expected->end(),
+                                   [&](const StampedPose2& e) { return e.t_s == p.t_s; });
+    if (same == expected->end()) continue;
+    EXPECT_LT((same->pose.translation() - p.pose.translation()).norm(), 0.03) << p.t_s;
+    ++compared;
+  }
+  EXPECT_GE(compared + 10, expected->size());
+}
+
 // The same window played at 10x real time over DDS into `localize --ros`: every scan arrives,
 // and the robot is found and tracked as the offline run finds and tracks it. Not bit for bit: the
 // topics carry ranges as float32 and headings as quaternions, and the global search's accept
@@ -105,21 +125,7 @@ TEST(CliLocalize, TheLiveNodeLocalizesPlayedScansAsTheOfflineRunDoes) {
             ros["scans_received"].get<int>());
   EXPECT_LE(live.report["localization"]["first_pose_after_s"].get<double>(),
             offline_report["localization"]["first_pose_after_s"].get<double>() + 1.0);
-  const Result<std::vector<StampedPose2>> expected =
-      read_tum_trajectory(dir.path() / "offline" / "trajectory.txt");
-  const Result<std::vector<StampedPose2>> got =
-      read_tum_trajectory(dir.path() / "node" / "trajectory.txt");
-  ASSERT_TRUE(expected.ok() && got.ok());
-  EXPECT_GE(got->size() + 10, expected->size());
-  std::size_t compared = 0;
-  for (const StampedPose2& p : *got) {
-    const auto same = std::find_if(expected->begin(), expected->end(),
-                                   [&](const StampedPose2& e) { return e.t_s == p.t_s; });
-    if (same == expected->end()) continue;
-    EXPECT_LT((same->pose.translation() - p.pose.translation()).norm(), 0.03) << p.t_s;
-    ++compared;
-  }
-  EXPECT_GE(compared + 10, expected->size());
+  expect_live_follows_offline(dir);
   const auto both = run_cli("localize --ros --session " + session + " --log x.clf");
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_THAT(both.output, HasSubstr("--ros localizes the topics"));
@@ -149,20 +155,7 @@ TEST(CliLocalize, WithoutOdometryTheLiveNodeFollowsTheRobotByItsScans) {
   EXPECT_EQ(ros["scans_received"], offline_report["localization"]["scans"]);
   EXPECT_EQ(ros["odometry_received"], 0);
   EXPECT_GT(ros["scans_localized"].get<int>(), ros["scans_received"].get<int>() / 2);
-  const Result<std::vector<StampedPose2>> expected =
-      read_tum_trajectory(dir.path() / "offline" / "trajectory.txt");
-  const Result<std::vector<StampedPose2>> got =
-      read_tum_trajectory(dir.path() / "node" / "trajectory.txt");
-  ASSERT_TRUE(expected.ok() && got.ok());
-  std::size_t compared = 0;
-  for (const StampedPose2& p : *got) {
-    const auto same = std::find_if(expected->begin(), expected->end(),
-                                   [&](const StampedPose2& e) { return e.t_s == p.t_s; });
-    if (same == expected->end()) continue;
-    EXPECT_LT((same->pose.translation() - p.pose.translation()).norm(), 0.03) << p.t_s;
-    ++compared;
-  }
-  EXPECT_GE(compared + 10, expected->size());
+  expect_live_follows_offline(dir);
   const auto base_alone = run_cli("localize --ros --session " + session + " --base-frame b");
   EXPECT_EQ(base_alone.exit_code, 2);
   EXPECT_THAT(base_alone.output, HasSubstr("--ros takes --base-frame with --no-odometry"));

@@ -33,6 +33,18 @@ SimulatedLaserRun office_run(std::uint64_t seed, double duration_s) {
 // The office mapped by a first robot: its scans at its true poses (a perfect session).
 slam::ProbabilityGrid office_map() { return support::map_at_truth(office_run(3, 0.0)); }
 
+// Every scan of `player` into `node`, one at a time, then the node's finish; `listener` hears
+// what the node published as it goes.
+void play_all(LogPlayer& player, LocalizerNode& node, net::Transport& listener) {
+  while (!player.done()) {
+    ASSERT_TRUE(player.publish_next().ok());
+    ASSERT_TRUE(node.spin_once().ok());
+    listener.poll();
+  }
+  ASSERT_TRUE(node.finish().ok());
+  listener.poll();
+}
+
 // Another robot's run played over topics into the node with no initial pose: it is found, then
 // tracked, and every pose it publishes is the offline localizer's for the same scan, with the
 // covariance on ROS's x, y and yaw (widened when not confident); scans with no pose publish
@@ -63,13 +75,7 @@ TEST(LocalizerNode, FindsAndTracksARobotFromTopicsAsTheOfflineLocalizerDoes) {
   ASSERT_TRUE(player.ok());
   auto node = LocalizerNode::create(map, picture, {.ns = "/r1", .map_frame = "map"}, *node_side);
   ASSERT_TRUE(node.ok()) << node.error().message;
-  while (!(*player)->done()) {
-    ASSERT_TRUE((*player)->publish_next().ok());
-    ASSERT_TRUE((*node)->spin_once().ok());
-    listener->poll();
-  }
-  ASSERT_TRUE((*node)->finish().ok());
-  listener->poll();
+  play_all(**player, **node, *listener);
 
   const LocalizerNodeStats& stats = (*node)->stats();
   EXPECT_EQ(stats.scans_received, run.log.scans.size());
@@ -159,13 +165,7 @@ TEST(LocalizerNode, WithoutOdometryTheRobotIsFollowedByItsScans) {
   options.base_frame = "r1/base_link";
   auto node = LocalizerNode::create(map, picture, options, *node_side);
   ASSERT_TRUE(node.ok()) << node.error().message;
-  while (!(*player)->done()) {
-    ASSERT_TRUE((*player)->publish_next().ok());
-    ASSERT_TRUE((*node)->spin_once().ok());
-    listener->poll();
-  }
-  ASSERT_TRUE((*node)->finish().ok());
-  listener->poll();
+  play_all(**player, **node, *listener);
 
   const LocalizerNodeStats& stats = (*node)->stats();
   EXPECT_EQ(stats.scans_received, log.scans.size());

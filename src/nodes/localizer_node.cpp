@@ -3,6 +3,7 @@
 #include "tessera/nodes/localizer_node.hpp"
 
 #include "tessera/nodes/pose_outputs.hpp"
+#include "tessera/slam/scan_matched_odometry.hpp"
 
 namespace tessera::nodes {
 namespace {

@@ -27,7 +27,6 @@
 #include "tessera/net/transport.hpp"
 #include "tessera/nodes/scan_input.hpp"
 #include "tessera/slam/localizer.hpp"
-#include "tessera/slam/scan_matched_odometry.hpp"
 
 namespace tessera::nodes {
 

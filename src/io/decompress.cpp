@@ -1,6 +1,7 @@
 // Chunk decompression: bzip2 (libbz2's one-shot BZ2_bzBuffToBuffDecompress), LZ4 frames
 // (lz4frame.h streaming API: roslz4 and MCAP both write the LZ4 frame format) and Zstandard
-// (ZSTD_decompress; frames need not state their content size).
+// (ZSTD_decompress; frames need not state their content size), and Zstandard data of unknown size
+// (ZSTD_decompressStream, for rosbag2's compressed files and messages).
 #include "internal/decompress.hpp"
 
 #include <bzlib.h>
@@ -81,6 +82,34 @@ std::string decompress(std::string_view method, Bytes in, std::uint64_t size,
   if (method == "lz4") return lz4(in, out);
   if (method == "zstd") return zstd(in, out);
   return "unknown compression '" + std::string(method) + "'";
+}
+
+std::string decompress_zstd(Bytes in, std::uint64_t max_bytes, std::vector<std::uint8_t>& out) {
+  const std::unique_ptr<ZSTD_DCtx, decltype(&ZSTD_freeDCtx)> ctx(ZSTD_createDCtx(), &ZSTD_freeDCtx);
+  if (!ctx) return "zstd: out of memory";
+  out.clear();
+  ZSTD_inBuffer input{in.data(), in.size(), 0};
+  std::size_t filled = 0;
+  std::size_t pending = 1;  // ZSTD_decompressStream's last result: 0 once a frame is complete
+  while (input.pos < input.size || pending != 0) {
+    if (filled == out.size()) {
+      if (out.size() >= max_bytes) {
+        return "zstd: decompresses to more than " + std::to_string(max_bytes) +
+               " bytes, the most this reader accepts";
+      }
+      const std::uint64_t grown = std::max<std::uint64_t>(2 * out.size(), std::uint64_t{1} << 16);
+      out.resize(static_cast<std::size_t>(std::min<std::uint64_t>(grown, max_bytes)));
+    }
+    ZSTD_outBuffer output{out.data() + filled, out.size() - filled, 0};
+    const std::size_t consumed_before = input.pos;
+    pending = ZSTD_decompressStream(ctx.get(), &output, &input);
+    if (ZSTD_isError(pending)) return std::string("zstd: ") + ZSTD_getErrorName(pending);
+    filled += output.pos;
+    // With room to write, no progress means the frame needs input that is not there.
+    if (output.pos == 0 && input.pos == consumed_before) return "zstd: truncated frame";
+  }
+  out.resize(filled);
+  return {};
 }
 
 }  // namespace tessera::io_internal

@@ -1,14 +1,18 @@
 // read_ros_bag: decides what the path is (a ROS 1 bag, a rosbag2 folder, a .db3 or an .mcap file)
 // and runs the format reader on each storage file. rosbag2's metadata.yaml (rosbag2_storage,
-// metadata_io.cpp, versions 1 to 9): storage_identifier, relative_file_paths, compression_format.
+// metadata_io.cpp, versions 1 to 9): storage_identifier, relative_file_paths, compression_format
+// and compression_mode (rosbag2_compression: zstd, each storage file compressed whole (FILE) or
+// each message's bytes (MESSAGE)).
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <limits>
 
 #include "internal/bag_builder.hpp"
+#include "internal/decompress.hpp"
 #include "internal/file_util.hpp"
 #include "tessera/core/time_ns.hpp"
 
@@ -61,6 +65,32 @@ Status read_storage_file(const std::filesystem::path& path, BagBuilder& builder,
                      ": not a ROS bag (expected '#ROSBAG V2.0', an MCAP or a sqlite3 file)");
 }
 
+/// The most a compressed rosbag2 storage file may decompress to (it is read into memory): 4 GiB.
+constexpr std::uint64_t kMaxStorageFileBytes = std::uint64_t{1} << 32;
+
+/// A storage file that rosbag2 compressed whole (compression_mode FILE): "run_0.db3.zstd" or
+/// "run_0.mcap.zstd", decompressed in memory and read by its first bytes.
+Status read_zstd_storage_file(const std::filesystem::path& path, BagBuilder& builder) {
+  Result<std::string> bytes = io_internal::read_file_bytes(path);
+  if (!bytes) return bytes.error();
+  std::vector<std::uint8_t> plain;
+  const auto* data = reinterpret_cast<const std::uint8_t*>(bytes->data());
+  if (std::string e = io_internal::decompress_zstd(io_internal::Bytes(data, bytes->size()),
+                                                   kMaxStorageFileBytes, plain);
+      !e.empty()) {
+    return input_error(path.string() + ": " + e);
+  }
+  builder.add_file(path);
+  builder.set_size_hint(plain.size());
+  const std::string_view view(reinterpret_cast<const char*>(plain.data()), plain.size());
+  if (view.starts_with(kMcapMagic)) return io_internal::decode_mcap(view, path.string(), builder);
+  if (view.starts_with(kSqliteMagic)) {
+    return io_internal::decode_rosbag2_sqlite(view, path.string(), builder);
+  }
+  return input_error(path.string() +
+                     ": decompressed, neither an MCAP nor a sqlite3 file (expected rosbag2's)");
+}
+
 /// A rosbag2 folder: metadata.yaml names the storage and the files.
 Status read_rosbag2_folder(const std::filesystem::path& dir, BagBuilder& builder) {
   const std::filesystem::path yaml = dir / "metadata.yaml";
@@ -76,11 +106,12 @@ Status read_rosbag2_folder(const std::filesystem::path& dir, BagBuilder& builder
   if (!info || !info.IsMap()) {
     return input_error(name + ": expected the key rosbag2_bagfile_information");
   }
-  std::string storage, compression;
+  std::string storage, compression, mode;
   std::vector<std::string> files;
   try {
     storage = info["storage_identifier"] ? info["storage_identifier"].as<std::string>() : "";
     compression = info["compression_format"] ? info["compression_format"].as<std::string>() : "";
+    mode = info["compression_mode"] ? info["compression_mode"].as<std::string>() : "";
     if (info["relative_file_paths"]) {
       for (const YAML::Node& f : info["relative_file_paths"]) files.push_back(f.as<std::string>());
     }
@@ -91,20 +122,32 @@ Status read_rosbag2_folder(const std::filesystem::path& dir, BagBuilder& builder
     return input_error(name + ": storage_identifier is '" + storage +
                        "', expected sqlite3 or mcap");
   }
-  if (!compression.empty()) {
+  std::transform(mode.begin(), mode.end(), mode.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  if (!compression.empty() && compression != "zstd") {
     return input_error(name + ": compression_format '" + compression +
-                       "' (rosbag2 file or message compression) is not supported; decompress "
-                       "with 'ros2 bag convert'");
+                       "' is not supported (rosbag2 compresses with zstd); decompress with 'ros2 "
+                       "bag convert'");
+  }
+  const bool whole_files = !compression.empty() && mode != "MESSAGE";
+  if (!compression.empty() && mode != "FILE" && mode != "MESSAGE" && !mode.empty()) {
+    return input_error(name + ": compression_mode '" + mode + "', expected FILE or MESSAGE");
   }
   if (files.empty()) return input_error(name + ": relative_file_paths lists no file");
-  builder.set_format("rosbag2 (" + storage + ")");
+  builder.set_format("rosbag2 (" + storage + (compression.empty() ? "" : ", zstd") + ")");
+  if (!compression.empty() && !whole_files) builder.zstd_messages();
   for (const std::string& f : files) {
     const std::filesystem::path p = dir / f;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(p, ec)) {
       return input_error(name + ": storage file " + f + " is missing");
     }
-    if (Status s = read_storage_file(p, builder, "rosbag2"); !s) return s;
+    Status read =
+        whole_files ? read_zstd_storage_file(p, builder) : read_storage_file(p, builder, "rosbag2");
+    if (!read) return read;
+    if (!builder.message_error().empty()) {
+      return input_error(p.string() + ": " + builder.message_error());
+    }
   }
   return Ok{};
 }

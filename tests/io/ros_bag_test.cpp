@@ -1,13 +1,21 @@
 // read_ros_bag on bags the test writes (ROS 1 with none / bz2 / lz4 chunks, MCAP with none / zstd
-// / lz4 chunks, a rosbag2 folder), on malformed ones, and on the real bags of
+// / lz4 chunks, rosbag2 folders, plain and zstd-compressed), on malformed ones, and on the real
+// bags of
 // ../shared/data/bags (topics and counts as SOURCES.md lists them).
 #include "tessera/io/ros_bag.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <sqlite3.h>
+#include <zstd.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
 #include <map>
+#include <memory>
 
 #include "support/data.hpp"
 #include "support/synthetic_bag.hpp"
@@ -94,6 +102,135 @@ TEST(RosBag, Rosbag2FolderWithMcapStorageReadsItsFiles) {
   EXPECT_EQ(bag->format, "rosbag2 (mcap)");
   EXPECT_EQ(counts(*bag)["/scan"], 10u);
   EXPECT_TRUE(bag->messages.empty());  // nothing kept unless asked
+}
+
+// Zstandard as rosbag2's streaming compressor writes it: frames that do not state their size.
+std::string zstd_stream(const std::string& in) {
+  std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> ctx(ZSTD_createCCtx(), &ZSTD_freeCCtx);
+  std::string out(ZSTD_compressBound(in.size()) + 64, '\0');
+  ZSTD_inBuffer input{in.data(), in.size(), 0};
+  ZSTD_outBuffer output{out.data(), out.size(), 0};
+  while (ZSTD_compressStream2(ctx.get(), &output, &input, ZSTD_e_end) != 0) {
+  }
+  out.resize(output.pos);
+  return out;
+}
+
+// A rosbag2 sqlite3 storage file of `run`, as rosbag2_storage_default_plugins writes its tables;
+// each message's bytes through `encode` (rosbag2's message compression, or none).
+std::string rosbag2_db3(const TempDir& dir, const support::SyntheticRun& run,
+                        const std::function<std::string(const std::string&)>& encode) {
+  const std::filesystem::path path = dir / "scratch.db3";
+  sqlite3* db = nullptr;
+  EXPECT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
+  sqlite3_exec(db,
+               "CREATE TABLE topics(id INTEGER PRIMARY KEY, name TEXT NOT NULL, type TEXT NOT "
+               "NULL, serialization_format TEXT NOT NULL, offered_qos_profiles TEXT NOT NULL);"
+               "CREATE TABLE messages(id INTEGER PRIMARY KEY, topic_id INTEGER NOT NULL, "
+               "timestamp INTEGER NOT NULL, data BLOB NOT NULL);",
+               nullptr, nullptr, nullptr);
+  sqlite3_stmt* topic = nullptr;
+  sqlite3_prepare_v2(db, "INSERT INTO topics VALUES (?, ?, ?, 'cdr', '')", -1, &topic, nullptr);
+  for (std::size_t i = 0; i < run.topics.size(); ++i) {
+    sqlite3_bind_int64(topic, 1, static_cast<sqlite3_int64>(i + 1));
+    sqlite3_bind_text(topic, 2, run.topics[i].name.c_str(), -1, SQLITE_TRANSIENT);
+    sqlite3_bind_text(topic, 3, run.topics[i].type.c_str(), -1, SQLITE_TRANSIENT);
+    EXPECT_EQ(sqlite3_step(topic), SQLITE_DONE);
+    sqlite3_reset(topic);
+  }
+  sqlite3_finalize(topic);
+  sqlite3_stmt* message = nullptr;
+  sqlite3_prepare_v2(db, "INSERT INTO messages(topic_id, timestamp, data) VALUES (?, ?, ?)", -1,
+                     &message, nullptr);
+  for (const support::MessageToWrite& m : run.messages) {
+    const std::string data = encode(std::string(m.data.begin(), m.data.end()));
+    sqlite3_bind_int64(message, 1, static_cast<sqlite3_int64>(m.topic + 1));
+    sqlite3_bind_int64(message, 2, m.t_ns);
+    sqlite3_bind_blob(message, 3, data.data(), static_cast<int>(data.size()), SQLITE_TRANSIENT);
+    EXPECT_EQ(sqlite3_step(message), SQLITE_DONE);
+    sqlite3_reset(message);
+  }
+  sqlite3_finalize(message);
+  sqlite3_close(db);
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(path);
+  return bytes;
+}
+
+// The run in stamp order, as a rosbag2 sqlite3 file gives its messages back.
+support::SyntheticRun in_stamp_order(support::SyntheticRun run) {
+  std::stable_sort(run.messages.begin(), run.messages.end(),
+                   [](const auto& a, const auto& b) { return a.t_ns < b.t_ns; });
+  return run;
+}
+
+std::string rosbag2_metadata(const std::string& storage, const std::string& mode,
+                             const std::string& file) {
+  return "rosbag2_bagfile_information:\n  version: 5\n  storage_identifier: " + storage +
+         "\n  relative_file_paths: [" + file +
+         "]\n  compression_format: zstd\n"
+         "  compression_mode: " +
+         mode + "\n";
+}
+
+// `ros2 bag record --compression-mode file --compression-format zstd`: each storage file is
+// compressed whole (run_0.db3.zstd, run_0.mcap.zstd), in frames that do not state their size.
+TEST(RosBag, Rosbag2FilesCompressedWholeAreRead) {
+  const auto run = in_stamp_order(support::synthetic_run(RosEncoding::kCdr, 20, 40));
+  const auto none = [](const std::string& b) { return b; };
+  for (const std::string storage : {"sqlite3", "mcap"}) {
+    TempDir dir;
+    const std::string file = storage == "mcap" ? "run_0.mcap.zstd" : "run_0.db3.zstd";
+    const std::string plain = storage == "mcap" ? support::write_mcap(run.topics, run.messages, "")
+                                                : rosbag2_db3(dir, run, none);
+    support::write_bytes(dir / file, zstd_stream(plain));
+    support::write_bytes(dir / "metadata.yaml", rosbag2_metadata(storage, "FILE", file));
+    Result<RosBag> bag = read_ros_bag(dir.path(), keep_all());
+    ASSERT_TRUE(bag.ok()) << bag.error().message;
+    EXPECT_EQ(bag->format, "rosbag2 (" + storage + ", zstd)");
+    expect_same_messages(*bag, run);
+
+    // Cut short, it is one line naming the file, not a half-read bag.
+    const std::string whole = zstd_stream(plain);
+    support::write_bytes(dir / file, whole.substr(0, whole.size() / 2));
+    Result<RosBag> cut = read_ros_bag(dir.path(), keep_all());
+    ASSERT_FALSE(cut.ok());
+    EXPECT_THAT(cut.error().message, HasSubstr(file + ": zstd: truncated frame"));
+  }
+}
+
+// `ros2 bag record --compression-mode message --compression-format zstd`: the storage file is
+// plain and each message's bytes are compressed.
+TEST(RosBag, Rosbag2MessagesCompressedOneByOneAreRead) {
+  const auto run = in_stamp_order(support::synthetic_run(RosEncoding::kCdr, 20, 40));
+  for (const std::string storage : {"sqlite3", "mcap"}) {
+    TempDir dir;
+    support::SyntheticRun compressed = run;
+    for (support::MessageToWrite& m : compressed.messages) {
+      const std::string z = zstd_stream(std::string(m.data.begin(), m.data.end()));
+      m.data.assign(z.begin(), z.end());
+    }
+    const std::string file = storage == "mcap" ? "run_0.mcap" : "run_0.db3";
+    support::write_bytes(dir / file,
+                         storage == "mcap"
+                             ? support::write_mcap(compressed.topics, compressed.messages, "")
+                             : rosbag2_db3(dir, run, zstd_stream));
+    support::write_bytes(dir / "metadata.yaml", rosbag2_metadata(storage, "MESSAGE", file));
+    Result<RosBag> bag = read_ros_bag(dir.path(), keep_all());
+    ASSERT_TRUE(bag.ok()) << bag.error().message;
+    expect_same_messages(*bag, run);
+
+    // A message that is not zstd data is named.
+    support::write_bytes(dir / file,
+                         storage == "mcap"
+                             ? support::write_mcap(run.topics, run.messages, "")
+                             : rosbag2_db3(dir, run, [](const std::string& b) { return b; }));
+    Result<RosBag> plain = read_ros_bag(dir.path(), keep_all());
+    ASSERT_FALSE(plain.ok());
+    EXPECT_THAT(plain.error().message, HasSubstr(file + ": message 1 of "));
+    EXPECT_THAT(plain.error().message, HasSubstr("zstd: "));
+  }
 }
 
 TEST(RosBag, UnindexedBagIsReadFrontToBack) {
@@ -228,8 +365,16 @@ TEST(RosBag, Rosbag2FolderProblemsNameMetadataYaml) {
               HasSubstr("metadata.yaml: storage file gone_0.db3 is missing"));
   support::write_bytes(dir / "metadata.yaml",
                        "rosbag2_bagfile_information:\n  storage_identifier: sqlite3\n"
-                       "  compression_format: zstd\n  relative_file_paths: [a_0.db3.zstd]\n");
-  EXPECT_THAT(read_ros_bag(dir.path()).error().message, HasSubstr("compression_format 'zstd'"));
+                       "  compression_format: lz4\n  relative_file_paths: [a_0.db3.lz4]\n");
+  EXPECT_THAT(
+      read_ros_bag(dir.path()).error().message,
+      HasSubstr("compression_format 'lz4' is not supported (rosbag2 compresses with zstd)"));
+  support::write_bytes(dir / "metadata.yaml",
+                       "rosbag2_bagfile_information:\n  storage_identifier: sqlite3\n"
+                       "  compression_format: zstd\n  compression_mode: CHUNK\n"
+                       "  relative_file_paths: [a_0.db3.zstd]\n");
+  EXPECT_THAT(read_ros_bag(dir.path()).error().message,
+              HasSubstr("compression_mode 'CHUNK', expected FILE or MESSAGE"));
 }
 
 TEST(RosBag, FileThatIsNoBagIsNamed) {

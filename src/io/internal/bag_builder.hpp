@@ -8,8 +8,10 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "internal/byte_cursor.hpp"
+#include "internal/decompress.hpp"
 #include "tessera/io/ros_bag.hpp"
 
 namespace tessera::io_internal {
@@ -34,17 +36,34 @@ class BagBuilder {
     return i;
   }
 
-  /// Counts a message on topic `t` and keeps its bytes when the caller asked for them.
+  /// Counts a message on topic `t` and keeps its bytes when the caller asked for them (with
+  /// zstd_messages(), decompressed; a message that does not decompress is not kept, and
+  /// message_error() says why).
   void message(std::size_t t, std::int64_t log_time_ns, Bytes data) {
     BagTopic& topic = bag_.topics[t];
     if (topic.message_count == 0 || log_time_ns < topic.first_ns) topic.first_ns = log_time_ns;
     if (topic.message_count == 0 || log_time_ns > topic.last_ns) topic.last_ns = log_time_ns;
     ++topic.message_count;
     if (!keep_[t]) return;
+    if (zstd_messages_) {
+      if (std::string e = decompress_zstd(data, kMaxChunkBytes, scratch_); !e.empty()) {
+        if (message_error_.empty()) {
+          message_error_ =
+              "message " + std::to_string(topic.message_count) + " of " + topic.name + ": " + e;
+        }
+        return;
+      }
+      data = Bytes(scratch_);
+    }
     if (bag_.data.empty()) bag_.data.reserve(size_hint_);
     bag_.messages.push_back({t, log_time_ns, bag_.data.size(), data.size()});
     bag_.data.insert(bag_.data.end(), data.begin(), data.end());
   }
+
+  /// Every message's bytes are Zstandard data (rosbag2's compression_mode MESSAGE).
+  void zstd_messages() { zstd_messages_ = true; }
+  /// The first message that did not decompress; empty when none.
+  [[nodiscard]] const std::string& message_error() const { return message_error_; }
 
   void add_file(const std::filesystem::path& file) { bag_.files.push_back(file); }
   /// Bytes the kept messages may take (the storage file's size): reserved on the first kept
@@ -58,6 +77,9 @@ class BagBuilder {
   RosBag bag_;
   std::vector<bool> keep_;
   std::size_t size_hint_ = 0;
+  bool zstd_messages_ = false;
+  std::vector<std::uint8_t> scratch_;  // a decompressed message
+  std::string message_error_;
   std::map<std::pair<std::string, std::string>, std::size_t> index_;
 };
 

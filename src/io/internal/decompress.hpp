@@ -22,4 +22,10 @@ inline constexpr std::uint64_t kMaxChunkBytes = std::uint64_t{1} << 28;
 [[nodiscard]] std::string decompress(std::string_view method, Bytes in, std::uint64_t size,
                                      std::vector<std::uint8_t>& out);
 
+/// Decompresses `in`, one or more Zstandard frames whose size need not be stated (a streaming
+/// writer's: rosbag2's file and message compression), into `out`, refusing more than `max_bytes`.
+/// Returns an empty string on success, otherwise what went wrong ("zstd: truncated frame").
+[[nodiscard]] std::string decompress_zstd(Bytes in, std::uint64_t max_bytes,
+                                          std::vector<std::uint8_t>& out);
+
 }  // namespace tessera::io_internal

@@ -148,44 +148,39 @@ double worst_offset_m(const std::vector<StampedPose2>& a, const std::vector<Stam
   return worst_m;
 }
 
-// A robot without odometry publishes its scans and the laser's place on base_link: the node maps
-// them as the offline pipeline maps the same scans alone, and /tf carries map -> base_link.
-TEST(SlamNode, WithoutOdometryScansAloneAreMappedAsOffline) {
-  const LaserLog log = scans_alone(office_log());
+// `log` mapped offline from its scans alone and played into a scans-alone node whose robot frame
+// is `base_frame`: every scan mapped, the same trajectory, and /tf's map -> `robot_frame`.
+void expect_mapped_as_offline(const LaserLog& log, const std::string& base_frame,
+                              const std::string& robot_frame) {
   slam::LaserSlamOptions options;
   options.use_odometry = false;
   Result<slam::LaserSlamResult> offline = slam::run_laser_slam(log, options);
   ASSERT_TRUE(offline.ok());
 
-  const ScansAloneRun live = play_scans_alone(log, "r1/base_link");
+  const ScansAloneRun live = play_scans_alone(log, base_frame);
   ASSERT_TRUE(live.result.ok()) << live.result.error().message;
   EXPECT_EQ(live.stats.scans_added, log.scans.size());
+  EXPECT_EQ(live.stats.scans_dropped_no_pose, 0U);
   EXPECT_EQ(live.stats.odometry_received, 0U);
   EXPECT_EQ(live.odometry_heard, 0U);  // the player sends none for a log without odometry
-  EXPECT_EQ(live.odom_frame, "r1/base_link");
+  EXPECT_EQ(live.odom_frame, robot_frame);
   ASSERT_FALSE(live.tf_children.empty());
-  EXPECT_EQ(live.tf_children.back(), "r1/base_link");
+  EXPECT_EQ(live.tf_children.back(), robot_frame);
   ASSERT_EQ(live.result->trajectory.size(), offline->trajectory.size());
   EXPECT_LT(worst_offset_m(live.result->trajectory, offline->trajectory), 1e-6);
+}
+
+// A robot without odometry publishes its scans and the laser's place on base_link: the node maps
+// them as the offline pipeline maps the same scans alone, and /tf carries map -> base_link.
+TEST(SlamNode, WithoutOdometryScansAloneAreMappedAsOffline) {
+  expect_mapped_as_offline(scans_alone(office_log()), "r1/base_link", "r1/base_link");
 }
 
 // A bare laser (no base_link, no tf at all): the laser's own frame is the robot.
 TEST(SlamNode, WithoutOdometryOrBaseFrameTheLaserIsTheRobot) {
   LaserLog log = scans_alone(office_log());
   for (StampedScan& s : log.scans) s.laser_in_robot = Pose2{};
-  slam::LaserSlamOptions options;
-  options.use_odometry = false;
-  Result<slam::LaserSlamResult> offline = slam::run_laser_slam(log, options);
-  ASSERT_TRUE(offline.ok());
-
-  const ScansAloneRun live = play_scans_alone(log, "");
-  ASSERT_TRUE(live.result.ok()) << live.result.error().message;
-  EXPECT_EQ(live.stats.scans_added, log.scans.size());
-  EXPECT_EQ(live.stats.scans_dropped_no_pose, 0U);
-  EXPECT_EQ(live.odom_frame, "r1/laser");
-  ASSERT_FALSE(live.tf_children.empty());
-  EXPECT_EQ(live.tf_children.back(), "r1/laser");
-  EXPECT_LT(worst_offset_m(live.result->trajectory, offline->trajectory), 1e-6);
+  expect_mapped_as_offline(log, "", "r1/laser");
 
   // The same scans into a node that waits for odometry: none is mapped, and it says why.
   net::InProcessBus bus;

@@ -129,13 +129,15 @@ Status read_rosbag2_folder(const std::filesystem::path& dir, BagBuilder& builder
                        "' is not supported (rosbag2 compresses with zstd); decompress with 'ros2 "
                        "bag convert'");
   }
-  const bool whole_files = !compression.empty() && mode != "MESSAGE";
-  if (!compression.empty() && mode != "FILE" && mode != "MESSAGE" && !mode.empty()) {
+  const bool compressed = !compression.empty();
+  if (compressed && mode != "FILE" && mode != "MESSAGE" && !mode.empty()) {
     return input_error(name + ": compression_mode '" + mode + "', expected FILE or MESSAGE");
   }
+  const bool per_message = compressed && mode == "MESSAGE";
+  const bool whole_files = compressed && !per_message;  // FILE, rosbag2's default mode
   if (files.empty()) return input_error(name + ": relative_file_paths lists no file");
-  builder.set_format("rosbag2 (" + storage + (compression.empty() ? "" : ", zstd") + ")");
-  if (!compression.empty() && !whole_files) builder.zstd_messages();
+  builder.set_format("rosbag2 (" + storage + (compressed ? ", zstd" : "") + ")");
+  if (per_message) builder.zstd_messages();
   for (const std::string& f : files) {
     const std::filesystem::path p = dir / f;
     std::error_code ec;

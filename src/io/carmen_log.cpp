@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "internal/carmen_beams.hpp"
 #include "internal/decoders.hpp"
 #include "internal/file_util.hpp"
 #include "internal/text_fields.hpp"
@@ -20,6 +21,7 @@
 namespace tessera {
 namespace {
 
+using io_internal::guess_angle_increment_rad;
 using io_internal::parse_double;
 
 /// Automatic no-return threshold of FLASER/RLASER: this far below the file's largest reading, so
@@ -140,16 +142,6 @@ class MessageLine {
   Error error_;
 };
 
-/// CARMEN's carmen_laser_guess_angle_increment (readlog.c) for old-format messages, which do not
-/// say: a SICK LMS at 1, 0.5 or 0.25 degrees, otherwise 180 degrees spread over the beams.
-double guess_angle_increment_rad(int beams) {
-  constexpr double kPi = std::numbers::pi;
-  if (beams == 180 || beams == 181) return kPi / 180.0;
-  if (beams == 360 || beams == 361) return kPi / 360.0;
-  if (beams == 400 || beams == 401) return kPi / 720.0;
-  return beams > 1 ? kPi / (beams - 1) : 0.0;
-}
-
 /// laser_in_robot from the logged laser and robot poses; a rear laser looks backwards (CARMEN's
 /// localize places it at robot theta + pi), so it is turned unless the logged pose already is.
 Pose2 laser_in_robot(const Pose2& laser, const Pose2& robot, bool rear) {
@@ -188,7 +180,7 @@ Result<StampedScan> parse_old_laser(MessageLine& line, std::string_view tag) {
   }
   const std::size_t pose_at = 2 + ranges;
   StampedScan s;
-  s.scan.angle_min_rad = -std::numbers::pi / 2.0;
+  s.scan.angle_min_rad = io_internal::kCarmenFirstBeamRad;
   s.scan.angle_increment_rad = guess_angle_increment_rad(n);
   s.scan.ranges_m = line.ranges(2, n);
   const Pose2 laser = line.pose(pose_at, "");

@@ -60,6 +60,14 @@ bench: build
 slam-table: cli
 	python3 scripts/slam_log_table.py --images docs/images
 
+# The same protocol on simulated buildings scored against their exact poses (docs/slam-results.md);
+# GMAPPING=<folder with gfs_nogui and gfs2log> adds GMapping's figure on the first seed.
+.PHONY: slam-sim-table
+slam-sim-table: cli
+	cmake --build build/dev --target simulated_corrected_log
+	python3 scripts/slam_log_table.py --sim --out out/slam-sim --images docs/images \
+	  $(if $(GMAPPING),--gmapping $(GMAPPING))
+
 # Issue 18 item 7: the same table with --manhattan (docs/slam-manhattan.md).
 .PHONY: slam-table-manhattan
 slam-table-manhattan: cli

@@ -51,6 +51,8 @@ const std::map<std::string, Setter>& setters() {
       {"submaps.scans_per_submap",
        [](auto& o, double v) { o.submaps.scans_per_submap = static_cast<int>(v); }},
       {"submaps.hit", [](auto& o, double v) { o.submaps.insert.hit_probability = v; }},
+      {"submaps.evidence_step_m", [](auto& o, double v) { o.submaps.hit_evidence_step_m = v; }},
+      {"submaps.max_evidence", [](auto& o, double v) { o.submaps.max_hit_evidence_scale = v; }},
       {"submaps.miss", [](auto& o, double v) { o.submaps.insert.miss_probability = v; }},
       {"submaps.miss_margin_m", [](auto& o, double v) { o.submaps.insert.miss_margin_m = v; }},
       {"submaps.join_m", [](auto& o, double v) { o.submaps.insert.join_returns_within_m = v; }},

@@ -63,6 +63,37 @@ TEST(ActiveSubmaps, SubmapsAreFullAfterTheirTravelWhateverTheScanCount) {
   EXPECT_NEAR(submaps.submap(1).local_pose().x, 4.0, 1e-12);
 }
 
+/// The probability of the cell at world (5, 0) in submap 0 after three scans taken `step_m` apart
+/// along x, each returning from that point.
+double wall_after_three_scans(double step_m) {
+  SubmapOptions o;
+  o.initial_size_m = 16.0;
+  ActiveSubmaps submaps(o);
+  for (int scan = 0; scan < 3; ++scan) {
+    const double x = step_m * scan;
+    ScanPoints p;
+    p.returns_m.push_back({5.0 - x, 0.0});
+    submaps.insert(p, {x, 0.0, 0.0});
+  }
+  const ProbabilityGrid& grid = submaps.submap(0).grid();
+  return grid.probability(grid.geometry().cell_at_unchecked({5.0, 0.0}));
+}
+
+// Scans a metre apart each stand for many dense ones: their hits weigh twice the log-odds
+// (0.6 instead of 0.55), from the second scan on (the first has no step yet); scans the motion
+// filter's 0.2 m apart keep Cartographer's weight.
+TEST(ActiveSubmaps, HitsWeighMoreWhenTheScansAreFarApart) {
+  const double odds_dense = 0.55 / 0.45;
+  const double odds_sparse = 0.6 / 0.4;
+  const double dense = odds_dense * odds_dense * odds_dense;
+  const double sparse = odds_dense * odds_sparse * odds_sparse;
+  EXPECT_NEAR(wall_after_three_scans(0.2), dense / (1.0 + dense), 0.01);
+  EXPECT_NEAR(wall_after_three_scans(1.0), sparse / (1.0 + sparse), 0.01);
+  // A step of 0.35-0.7 m scales in between.
+  EXPECT_GT(wall_after_three_scans(0.5), wall_after_three_scans(0.2) + 0.01);
+  EXPECT_LT(wall_after_three_scans(0.5), wall_after_three_scans(1.0) - 0.01);
+}
+
 TEST(Submap, GridIsInTheSubmapFrame) {
   SubmapOptions o;
   Submap submap({5.0, 2.0, 0.0}, o);
@@ -80,6 +111,12 @@ TEST(SubmapOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
   o = SubmapOptions{};
   o.travel_per_submap_m = -1.0;
   EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("travel_per_submap_m"));
+  o = SubmapOptions{};
+  o.hit_evidence_step_m = 0.0;
+  EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("hit_evidence_step_m"));
+  o = SubmapOptions{};
+  o.max_hit_evidence_scale = 0.5;
+  EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("max_hit_evidence_scale"));
 }
 
 }  // namespace

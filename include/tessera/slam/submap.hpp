@@ -28,6 +28,17 @@ struct SubmapOptions {
   /// Side of a new submap's grid; it grows as scans reach beyond it.
   double initial_size_m = 16.0;
   RangeInsertOptions insert;
+  /// Hits weigh more when scans are far apart. Cartographer's hit probability (insert, 0.55) suits
+  /// scans a few centimetres apart, where each wall cell of a submap is hit dozens of times; in a
+  /// log with a scan every metre it is hit a few times, stays near 0.55 and gives the matcher
+  /// little to hold on to. A scan's hits therefore get the hit log-odds times
+  /// clamp(step / hit_evidence_step_m, 1, max_hit_evidence_scale), rounded to a quarter, `step`
+  /// the mean distance between the last 20 inserts (a mean, so that the scans of a sparse log
+  /// weigh alike whether they were kept for a metre driven or a turn): logs whose nodes are the
+  /// motion filter's 0.2 m apart keep 0.55, a scan every 0.7 m or more gets 0.6. Measured on
+  /// simulated buildings against their exact poses and on the real logs (decision 0035).
+  double hit_evidence_step_m = 0.35;
+  double max_hit_evidence_scale = 2.0;
 };
 
 /// Empty when usable; otherwise names the field and the rule it breaks.
@@ -74,7 +85,9 @@ class ActiveSubmaps {
   };
   /// Inserts a scan taken at T_local_robot into the active submaps, starting a new submap first
   /// when the newest is full (scans_per_submap scans or travel_per_submap_m metres) and finishing
-  /// the oldest when the newest becomes full: the oldest then holds about twice a full one.
+  /// the oldest when the newest becomes full: the oldest then holds about twice a full one. Its
+  /// hits weigh by the mean step of the recent inserts (SubmapOptions::hit_evidence_step_m; the
+  /// first insert after finish_all does not count the step from the one before).
   Insertion insert(const ScanPoints& points, const Pose2& T_local_robot);
 
   /// Finishes every active submap that is not finished yet and empties the window, so that the
@@ -93,10 +106,17 @@ class ActiveSubmaps {
  private:
   [[nodiscard]] bool full(const Submap& s) const;
 
+  /// The inserter for a mean step of `step_m` metres between inserts.
+  [[nodiscard]] const RangeInserter& inserter_for(double step_m) const;
+
   SubmapOptions options_;
-  RangeInserter inserter_;
+  /// inserters_[k]: hits at 1 + k / 4 times the hit log-odds of options_.insert.
+  std::vector<RangeInserter> inserters_;
   std::deque<Submap> submaps_;
   std::vector<int> active_;
+  std::optional<Vec2> last_position_m_;  // of the previous insert; empty after finish_all
+  std::deque<double> recent_steps_m_;    // the last steps between inserts
+  double recent_sum_m_ = 0.0;
 };
 
 }  // namespace tessera::slam

@@ -10,7 +10,8 @@
 // usage: simulated_corrected_log --world FILE [--map-resolution-m R] --out FILE.log
 //          [--seed N] [--max-path-m L] [--range-m 50] [--every-m 1.0] [--every-rad 0.5]
 //          [--waypoint-spacing-m 3.5]
-// Prints the scans kept, the path and the time taken. Exit 2 on a usage error, 3 on bad input.
+// Prints the scans kept, the path and the time driven. Exit 2 on a usage error, 3 on bad input
+// (the floor plan, or no room for the robot), 4 when the log cannot be written.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>

@@ -17,7 +17,9 @@ namespace tessera {
 /// (odometry * laser_in_robot): `FLASER` when its beams lie where CARMEN's old format puts them
 /// (the first at -pi/2, the increment CARMEN guesses from the beam count, within 1e-9 rad), else
 /// `ROBOTLASER1` with its start angle, field of view, resolution and maximum range. Readings are
-/// written as they are, so a no-return reading stays at or above the scan's max_range_m. Each
+/// written as they are, so a no-return reading stays at or above the scan's max_range_m (FLASER
+/// states no maximum: read_carmen_log then takes the file's largest reading less 0.1 m as "no
+/// return", CarmenReadOptions::no_return_m). Each
 /// LaserLog::odometry reading becomes an `ODOM` line (speeds 0), placed before the first scan with
 /// a later stamp. Both stamps of a line are t_s; the host is "tessera". Numbers have 6 decimals
 /// (1 um, 1 urad, 1 us). The poses are written even when log.has_odometry is false (then they are

@@ -116,7 +116,6 @@ class ActiveSubmaps {
   std::vector<int> active_;
   std::optional<Vec2> last_position_m_;  // of the previous insert; empty after finish_all
   std::deque<double> recent_steps_m_;    // the last steps between inserts
-  double recent_sum_m_ = 0.0;
 };
 
 }  // namespace tessera::slam

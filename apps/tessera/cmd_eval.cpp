@@ -63,6 +63,14 @@ EvalCommand::EvalCommand(CLI::App& app) {
                    "Seconds added to the trajectory's stamps to reach the relations' time base "
                    "(Intel logger stamps: 976052857.337284)")
       ->capture_default_str();
+  relations_
+      ->add_option("--snap-s", snap_s_,
+                   "Take each relation's poses at the trajectory's scans nearest in time, when "
+                   "within this many seconds, instead of interpolating (for a log whose stamps "
+                   "jitter against the relations' clock; skips relations with no scan near "
+                   "them); 0: interpolate")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   relations_->add_option("--out", out_, "Folder for report.json (default: print only)");
 
   ate_ = sub_->add_subcommand(
@@ -93,7 +101,7 @@ int EvalCommand::run_relations() const {
   if (!trajectory) return report_error(trajectory.error());
   Result<std::vector<Relation>> relations = read_relations(relations_file_);
   if (!relations) return report_error(relations.error());
-  Result<RelationMetric> metric = relation_metric(*trajectory, *relations, time_offset_s_);
+  Result<RelationMetric> metric = relation_metric(*trajectory, *relations, time_offset_s_, snap_s_);
   if (!metric) {
     Error e = metric.error();
     e.message = relations_file_.string() + " against " + trajectory_.string() + ": " + e.message;
@@ -101,7 +109,8 @@ int EvalCommand::run_relations() const {
   }
   const RelationMetric& m = *metric;
   fmt::print(
-      "relations: {} scored, {} skipped (outside the trajectory or in its gaps); translation "
+      "relations: {} scored, {} skipped (outside the trajectory, in its gaps or with no scan "
+      "near them); translation "
       "{:.4f} +/- {:.4f} m, rotation {:.3f} +/- {:.3f} deg\n",
       m.count, m.skipped, m.trans_mean_m, m.trans_std_m, rad_to_deg(m.rot_mean_rad),
       rad_to_deg(m.rot_std_rad));
@@ -110,7 +119,8 @@ int EvalCommand::run_relations() const {
   context.command = "eval relations";
   context.options = {{"trajectory", trajectory_.string()},
                      {"relations", relations_file_.string()},
-                     {"time_offset_s", time_offset_s_}};
+                     {"time_offset_s", time_offset_s_},
+                     {"snap_s", snap_s_}};
   context.wall_s = seconds_since(t0);
   return write_report(out_, relations_report(m, context));
 }

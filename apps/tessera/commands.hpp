@@ -171,6 +171,7 @@ class EvalCommand : public Command {
   std::filesystem::path relations_file_;
   std::filesystem::path reference_;
   double time_offset_s_ = 0.0;
+  double snap_s_ = 0.0;  // > 0: relations take the nearest scans within this, not interpolation
   TrajectoryErrorOptions options_;
   std::optional<std::filesystem::path> out_;
 };

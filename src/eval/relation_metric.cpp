@@ -36,6 +36,20 @@ std::string seconds(double t_s) {
   return text;
 }
 
+/// nearest_pose's scan, as an index into `sorted`.
+std::optional<std::size_t> nearest_index(const std::vector<StampedPose2>& sorted, double t_s,
+                                         double max_offset_s) {
+  if (sorted.empty()) return std::nullopt;
+  const auto hi = std::lower_bound(sorted.begin(), sorted.end(), t_s,
+                                   [](const StampedPose2& p, double t) { return p.t_s < t; });
+  auto best = hi;
+  if (hi == sorted.end() || (hi != sorted.begin() && t_s - std::prev(hi)->t_s <= hi->t_s - t_s)) {
+    best = std::prev(hi);
+  }
+  if (!(std::abs(best->t_s - t_s) <= max_offset_s)) return std::nullopt;
+  return static_cast<std::size_t>(best - sorted.begin());
+}
+
 }  // namespace
 
 std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted, double t_s,
@@ -53,10 +67,18 @@ std::optional<Pose2> interpolate_pose(const std::vector<StampedPose2>& sorted, d
   return interpolate(lo->pose, hi->pose, (t_s - lo->t_s) / (hi->t_s - lo->t_s));
 }
 
+std::optional<Pose2> nearest_pose(const std::vector<StampedPose2>& sorted, double t_s,
+                                  double max_offset_s) {
+  const std::optional<std::size_t> i = nearest_index(sorted, t_s, max_offset_s);
+  if (!i) return std::nullopt;
+  return sorted[*i].pose;
+}
+
 Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajectory,
-                                       const std::vector<Relation>& relations,
-                                       double time_offset_s) {
+                                       const std::vector<Relation>& relations, double time_offset_s,
+                                       double snap_s) {
   TESSERA_ASSERT(std::isfinite(time_offset_s));
+  TESSERA_ASSERT(snap_s >= 0.0);
   if (trajectory.empty()) return input_error("the trajectory has no poses");
   if (relations.empty()) return input_error("there are no relations to score");
 
@@ -83,8 +105,20 @@ Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajecto
   m.trajectory_end_s = sorted.back().t_s;
   std::vector<double> trans_m, trans_sq_m2, rot_rad, rot_sq_rad2;
   for (const Relation& rel : relations) {
-    const std::optional<Pose2> x1 = interpolate_pose(sorted, rel.t1_s, max_gap_s);
-    const std::optional<Pose2> x2 = interpolate_pose(sorted, rel.t2_s, max_gap_s);
+    std::optional<Pose2> x1, x2;
+    if (snap_s > 0.0) {
+      // Both stamps on one scan: the relation joins two scans this trajectory does not tell
+      // apart (stamps closer than its spacing), which no pose of it can score.
+      const std::optional<std::size_t> i1 = nearest_index(sorted, rel.t1_s, snap_s);
+      const std::optional<std::size_t> i2 = nearest_index(sorted, rel.t2_s, snap_s);
+      if (i1 && i2 && *i1 != *i2) {
+        x1 = sorted[*i1].pose;
+        x2 = sorted[*i2].pose;
+      }
+    } else {
+      x1 = interpolate_pose(sorted, rel.t1_s, max_gap_s);
+      x2 = interpolate_pose(sorted, rel.t2_s, max_gap_s);
+    }
     if (!x1 || !x2) {
       ++m.skipped;
       continue;

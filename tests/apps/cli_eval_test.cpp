@@ -200,5 +200,32 @@ TEST(CliEval, IntelLogsScoreAgainstTheKummerleRelations) {
   EXPECT_LT(r["rot_mean_deg"].get<double>(), 6.0);
 }
 
+// FR079's corrected log carries the logger's stamps, which run 1211.43-1211.50 s behind the IPC
+// stamps of Kummerle's relations (laser/fr079/SOURCES.md: the seven scans that carry both).
+// Snapped to the nearest scan, GMapping's corrected poses score what their scans' motions are
+// off; interpolated at the offset stamps, the clock's jitter times the robot's motion is added.
+TEST(CliEval, SnappedStampsScoreFr079sCorrectedPosesOnTheirOwnScans) {
+  const auto fr079 = support::data_path("laser/fr079");
+  TESSERA_REQUIRE_DATA(fr079 / "freiburg-079-corrected.log");
+  const std::string args = "eval relations --trajectory " +
+                           (fr079 / "freiburg-079-corrected.log").string() + " --relations " +
+                           (fr079 / "fr079.relations").string() + " --time-offset 1211.467";
+  TempDir dir;
+  const support::CliRun interpolated = run_cli(args + " --out " + (dir / "i").string());
+  const support::CliRun snapped = run_cli(args + " --snap-s 0.07 --out " + (dir / "s").string());
+  ASSERT_EQ(interpolated.exit_code, 0) << interpolated.output;
+  ASSERT_EQ(snapped.exit_code, 0) << snapped.output;
+  const nlohmann::json i = read_json(dir.path() / "i" / "report.json");
+  const nlohmann::json s = read_json(dir.path() / "s" / "report.json");
+  EXPECT_EQ(s["options"]["snap_s"], 0.07);
+  EXPECT_EQ(i["relations"]["count"], 1685);
+  // 4,791 of the run's 4,934 scans are in the log: relations on a missing scan are skipped.
+  EXPECT_GT(s["relations"]["count"].get<int>(), 1200);
+  EXPECT_NEAR(s["relations"]["trans_mean_m"].get<double>(), 0.061, 0.002);
+  EXPECT_NEAR(s["relations"]["rot_mean_deg"].get<double>(), 0.71, 0.02);
+  EXPECT_GT(i["relations"]["rot_mean_deg"].get<double>(),
+            1.3 * s["relations"]["rot_mean_deg"].get<double>());
+}
+
 }  // namespace
 }  // namespace tessera

@@ -167,6 +167,49 @@ TEST(RelationMetric, InterpolatesTheEstimateBetweenItsPoses) {
   ASSERT_TRUE(off.ok());
   EXPECT_NEAR(off->rot_mean_rad, std::numbers::pi / 4.0, 1e-12);
 }
+TEST(NearestPose, TakesTheScanNearestInTimeWithinTheBound) {
+  const std::vector<StampedPose2> sorted = {
+      {0.0, {0.0, 0.0, 0.0}}, {0.2, {1.0, 0.0, 0.0}}, {0.4, {2.0, 0.0, 0.0}}};
+  EXPECT_DOUBLE_EQ(nearest_pose(sorted, 0.27, 0.1)->x, 1.0);
+  EXPECT_DOUBLE_EQ(nearest_pose(sorted, 0.33, 0.1)->x, 2.0);
+  EXPECT_DOUBLE_EQ(nearest_pose(sorted, 0.3, 0.1)->x, 1.0);  // a tie: the earlier scan
+  EXPECT_DOUBLE_EQ(nearest_pose(sorted, -0.05, 0.1)->x, 0.0);
+  EXPECT_DOUBLE_EQ(nearest_pose(sorted, 0.45, 0.1)->x, 2.0);
+  EXPECT_FALSE(nearest_pose(sorted, 0.55, 0.1).has_value());
+  EXPECT_FALSE(nearest_pose(sorted, 0.27, 0.05).has_value());
+  EXPECT_FALSE(nearest_pose({}, 0.0, 1.0).has_value());
+}
+
+TEST(RelationMetric, SnappedStampsScoreTheScansTheRelationJoinsNotTheJitter) {
+  // Scans every 0.2 s while the robot drives 1 m/s; the relations' clock runs 40 ms off the
+  // scans' in either direction. Interpolated at the relation's stamps the estimate seems 4 cm off
+  // the exact relations; snapped to the nearest scan it scores zero.
+  std::vector<StampedPose2> scans;
+  for (int k = 0; k <= 10; ++k) scans.push_back({0.2 * k, {0.2 * k, 0.0, 0.0}});
+  const std::vector<Relation> relations = {
+      {0.2 + 0.04, 1.0 - 0.04, between(scans[1].pose, scans[5].pose)},
+      {0.6 - 0.04, 1.4 + 0.04, between(scans[3].pose, scans[7].pose)}};
+  const Result<RelationMetric> interpolated = relation_metric(scans, relations);
+  ASSERT_TRUE(interpolated.ok()) << interpolated.error().message;
+  EXPECT_NEAR(interpolated->trans_mean_m, 0.08, 1e-9);
+  const Result<RelationMetric> snapped = relation_metric(scans, relations, 0.0, 0.07);
+  ASSERT_TRUE(snapped.ok()) << snapped.error().message;
+  EXPECT_EQ(snapped->count, 2u);
+  EXPECT_NEAR(snapped->trans_mean_m, 0.0, 1e-12);
+  // A relation whose scan is missing from the trajectory is skipped, not scored at a neighbour.
+  std::vector<StampedPose2> missing = scans;
+  missing.erase(missing.begin() + 5);
+  const Result<RelationMetric> gap = relation_metric(missing, relations, 0.0, 0.07);
+  ASSERT_TRUE(gap.ok()) << gap.error().message;
+  EXPECT_EQ(gap->count, 1u);
+  EXPECT_EQ(gap->skipped, 1u);
+  // Two stamps 5 ms apart land on one scan: a relation the trajectory cannot tell, skipped.
+  const Result<RelationMetric> one_scan =
+      relation_metric(scans, {relations[0], {0.6, 0.605, {0.005, 0.0, 0.0}}}, 0.0, 0.07);
+  ASSERT_TRUE(one_scan.ok()) << one_scan.error().message;
+  EXPECT_EQ(one_scan->count, 1u);
+  EXPECT_EQ(one_scan->skipped, 1u);
+}
 
 TEST(RelationMetric, AngleErrorWrapsAtPlusMinusPi) {
   // The estimate turns from 3.1 to -3.1 rad: 2 pi - 6.2 = 0.083 rad counter-clockwise.

@@ -30,7 +30,7 @@ struct RelationError {
 /// by (180/pi)^2). A standard deviation over a single relation is 0.
 struct RelationMetric {
   std::size_t count = 0;    // relations scored: both stamps inside the trajectory's time span
-  std::size_t skipped = 0;  // relations with a stamp outside it
+  std::size_t skipped = 0;  // relations with a stamp outside it, in a gap, or with no scan near it
   double trans_mean_m = 0.0;
   double trans_std_m = 0.0;
   double trans_sq_mean_m2 = 0.0;
@@ -54,6 +54,12 @@ struct RelationMetric {
     const std::vector<StampedPose2>& sorted, double t_s,
     double max_gap_s = std::numeric_limits<double>::infinity());
 
+/// The pose of the trajectory's pose nearest in time to t_s, when it is stamped within
+/// max_offset_s of t_s; nullopt otherwise (on a tie, the earlier pose). Precondition: `sorted` is
+/// sorted by t_s. Cost: O(log n).
+[[nodiscard]] std::optional<Pose2> nearest_pose(const std::vector<StampedPose2>& sorted, double t_s,
+                                                double max_offset_s);
+
 /// Scores `trajectory` (any order: stamps may go backwards, as in real CARMEN logs; a sorted copy
 /// is used) against `relations`. `time_offset_s` is added to every trajectory stamp to bring it
 /// into the relations' time base (Intel: logger-relative stamps + 976052857.337284 s). Relations
@@ -62,12 +68,20 @@ struct RelationMetric {
 /// trajectory does not cover (a resumed session that left part of a log out, a localizer's lost
 /// spell), across which interpolating would score a guess. A trajectory of one pose per scan
 /// (0.2 s apart) skips gaps over 5 s; one of keyframes seconds apart keeps its ordinary gaps.
-/// Input error when the
-/// trajectory or the relations are empty, or when no relation falls inside the span.
-/// Precondition: time_offset_s is finite. Cost: O((n + m) log n) for n poses and m relations.
+/// With `snap_s` > 0 nothing is interpolated: each relation stamp takes the pose of the
+/// trajectory's scan nearest in time, and a relation with a stamp farther than snap_s from every
+/// pose, or with both stamps nearest to one scan, is skipped. Kummerle's relations join two scans;
+/// where a log's stamps are on another clock that jitters against the relations' (FR079's corrected
+/// log: logger stamps 1211.43-1211.50 s behind the relations' IPC stamps), interpolating at the
+/// offset stamp would score the jitter times the robot's speed, while the nearest scan is the one
+/// the relation was measured on as long as the jitter stays under half the scans' spacing. Input
+/// error when the trajectory or the relations are empty, or when no relation falls inside the span.
+/// Precondition: time_offset_s is finite, snap_s >= 0. Cost: O((n + m) log n) for n poses and m
+/// relations.
 [[nodiscard]] Result<RelationMetric> relation_metric(const std::vector<StampedPose2>& trajectory,
                                                      const std::vector<Relation>& relations,
-                                                     double time_offset_s = 0.0);
+                                                     double time_offset_s = 0.0,
+                                                     double snap_s = 0.0);
 
 /// How many scored relations are off by more than max_trans_m or max_rot_rad. With a SLAM's loop
 /// closures as the relations and the true trajectory as the one scored, the wrong closures: the

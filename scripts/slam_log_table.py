@@ -20,6 +20,7 @@ usage: scripts/slam_log_table.py [--tessera build/dev/apps/tessera/tessera] [--s
 import argparse
 import concurrent.futures
 import gzip
+import json
 import os
 import pathlib
 import shutil
@@ -42,6 +43,13 @@ LOGS = {
     "fhw": ("maps/radish_carmen/fhw-corrected.log.gz", "FHW", 0.23, 12.1, 0.35),
     "intel": ("maps/radish_carmen/intel-corrected.log.gz", "Intel corrected", 0.061, 0.57, 0.10),
 }
+
+# Kummerle et al. 2009 relations (hand-checked scan matches, the ground truth where a log has them):
+# name -> (relations file relative to the data folder, seconds from the corrected log's stamps to
+# the relations' clock, snap bound (s)). FR079's log is stamped by the logger, 1211.43-1211.50 s
+# behind the relations' IPC stamps (laser/fr079/SOURCES.md, the seven scans that carry both), with
+# scans 0.21 s apart: each relation is scored on the scan nearest its stamp within 0.07 s.
+RELATIONS = {"fr079": ("laser/fr079/fr079.relations", 1211.467, 0.07)}
 
 # Simulated buildings: name -> (floor plan relative to the data folder, its cell size (m), label).
 SIM_WORLDS = {
@@ -130,6 +138,31 @@ def gmapping_xyt(gmapping_dir, log, case):
     return case / "gmapping.xyt"
 
 
+def relation_error(tessera, trajectory, name, out):
+    """(mean translation m, mean rotation deg, relations scored) of `trajectory` (a TUM file or a
+    CARMEN log) on the log's Kummerle relations, by `tessera eval relations`."""
+    rel, offset_s, snap_s = RELATIONS[name]
+    subprocess.run([tessera, "eval", "relations", "--trajectory", str(trajectory), "--relations",
+                    str(DATA / rel), "--time-offset", str(offset_s), "--snap-s", str(snap_s),
+                    "--out", str(out)], check=True, capture_output=True)
+    with open(out / "report.json") as f:
+        r = json.load(f)["relations"]
+    return r["trans_mean_m"], r["rot_mean_deg"], r["count"]
+
+
+def on_log_stamps(tum, log, dst):
+    """The trajectory of a restamped run (scan k at 0.2 k s) with the corrected log's own stamps,
+    which the relations' clock is known against."""
+    stamps = [line.split()[-1] for line in open(log) if line.startswith("FLASER")]
+    with open(tum) as f, open(dst, "w") as g:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            v = line.split()
+            g.write(" ".join([stamps[round(float(v[0]) / 0.2)]] + v[1:]) + "\n")
+    return dst
+
+
 def run_one(tessera, slam_args, out_root, name, seed, drift, gmapping_dir=None):
     case = out_root / f"{name}_d{drift}_s{seed}"
     case.mkdir(parents=True, exist_ok=True)
@@ -147,6 +180,10 @@ def run_one(tessera, slam_args, out_root, name, seed, drift, gmapping_dir=None):
     tum_to_xyt(case / "slam" / "trajectory.txt", case / "slam.xyt")
     result = dict(name=name, seed=seed, drift=drift, wall_s=wall_s, case=case,
                   odometry=ate(case / "odometry.xyt", truth), slam=ate(case / "slam.xyt", truth))
+    if name in RELATIONS:
+        tum = on_log_stamps(case / "slam" / "trajectory.txt", plain_log(name, out_root),
+                            case / "slam-log-stamps.txt")
+        result["relations"] = relation_error(tessera, tum, name, case / "relations")
     if gmapping_dir:
         t0 = time.monotonic()
         result["gmapping"] = ate(gmapping_xyt(gmapping_dir, log, case), truth)
@@ -222,8 +259,9 @@ def main():
 def print_log_table(results, args):
     """The real logs' rows with the issue's bar and the peers' seed-1 figures; returns failures."""
     print("| Log | Drift (deg/m) | Seed | ATE odometry (m) | ATE tessera (m) | Odometry / tessera "
-          "| Bar (m) | GMapping seed 1 (m) | Cartographer seed 1 (m) | Wall (s) |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+          "| Bar (m) | GMapping seed 1 (m) | Cartographer seed 1 (m) | Relations tessera (m, deg) "
+          "| Wall (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     failures = 0
     for r in results:
         label, gmapping, cartographer, within = LOGS[r["name"]][1:]
@@ -231,6 +269,7 @@ def print_log_table(results, args):
             failures += 1
             print(f"| {label} | {r['drift']} | {r['seed']} | run failed: {r['error']} |")
             continue
+        relations = ("{:.4f}, {:.3f}".format(*r["relations"][:2]) if "relations" in r else "")
         # The issue's bar: at most its figure and below Cartographer's at 0.15 deg/m; at most
         # twice that at 0.3 deg/m.
         bar = min(within, cartographer) * (2.0 if r["drift"] > 0.2 else 1.0)
@@ -239,7 +278,14 @@ def print_log_table(results, args):
         mark = "" if ok else " (over)"
         print(f"| {label} | {r['drift']} | {r['seed']} | {r['odometry']:.3f} | {r['slam']:.3f}{mark} "
               f"| {r['odometry'] / max(r['slam'], 1e-9):.1f} | {bar:.3f} | {gmapping} | "
-              f"{cartographer} | {r['wall_s']:.1f} |")
+              f"{cartographer} | {relations} | {r['wall_s']:.1f} |")
+    # The reference itself on the same relations: how far the ATE's yardstick is from the truth.
+    out_root = pathlib.Path(args.out)
+    for name in sorted({r["name"] for r in results if "relations" in r}):
+        trans_m, rot_deg, count = relation_error(args.tessera, plain_log(name, out_root), name,
+                                                 out_root / f"{name}-reference-relations")
+        print(f"\n{LOGS[name][1]}: the reference (the corrected log's poses) scores {trans_m:.4f} m, "
+              f"{rot_deg:.3f} deg on the same {count} relations.")
     return failures
 
 

@@ -61,7 +61,9 @@ nlohmann::json slam_options_json(const slam::LaserSlamOptions& options,
           {"loop_window_growth_m_per_m", options.loop_window_growth_m_per_m},
           {"loop_window_growth_rad_per_m", options.loop_window_growth_rad_per_m},
           {"loop_window_max_m_rad",
-           {options.loop_window_max.linear_m, options.loop_window_max.angular_rad}}};
+           {options.loop_window_max.linear_m, options.loop_window_max.angular_rad}},
+          {"final_map_passes", options.final_map_passes},
+          {"final_map_hessian_scale", options.final_map_hessian_scale}};
 }
 
 nlohmann::json slam_stats_json(const slam::LaserSlamResult& r, const LaserLog& log) {
@@ -84,6 +86,7 @@ nlohmann::json slam_stats_json(const slam::LaserSlamResult& r, const LaserLog& l
           {"matching_s", st.matching_s},
           {"loop_search_s", st.loop_search_s},
           {"optimization_s", st.optimization_s},
+          {"whole_map_s", st.whole_map_s},
           {"map_s", st.map_s}};
 }
 

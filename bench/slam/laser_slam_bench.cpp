@@ -122,6 +122,12 @@ const std::map<std::string, Setter>& setters() {
       {"wrong_seed",
        [](auto& o, double v) { o.wrong_closure_seed = static_cast<std::uint64_t>(v); }},
       {"huber_scale", [](auto& o, double v) { o.huber_scale = v; }},
+      {"final.passes", [](auto& o, double v) { o.final_map_passes = static_cast<int>(v); }},
+      {"final.hessian", [](auto& o, double v) { o.final_map_hessian_scale = v; }},
+      {"final.t", [](auto& o, double v) { o.final_map_refiner.translation_weight = v; }},
+      {"final.r", [](auto& o, double v) { o.final_map_refiner.rotation_weight = v; }},
+      {"final.iter",
+       [](auto& o, double v) { o.final_map_refiner.max_iterations = static_cast<int>(v); }},
   };
   return kSetters;
 }
@@ -332,9 +338,9 @@ int run(int argc, char** argv) {
                 robust, off_10cm, off_50cm);
   }
   std::printf(
-      "wall %.2f s (matching %.2f, loop search %.2f, optimisation %.2f, map %.2f)  "
-      "%.2f ms/scan  %.0f scans/s  real-time factor %.1f\n",
-      wall_s, st.matching_s, st.loop_search_s, st.optimization_s, st.map_s,
+      "wall %.2f s (matching %.2f, loop search %.2f, optimisation %.2f, whole-map matches "
+      "%.2f, map %.2f)  %.2f ms/scan  %.0f scans/s  real-time factor %.1f\n",
+      wall_s, st.matching_s, st.loop_search_s, st.optimization_s, st.whole_map_s, st.map_s,
       1e3 * wall_s / static_cast<double>(st.scans), static_cast<double>(st.scans) / wall_s,
       duration_s / wall_s);
 

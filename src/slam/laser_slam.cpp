@@ -117,6 +117,10 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
   if (!(o.wrong_closure_share >= 0.0 && o.wrong_closure_share <= 1.0)) {
     return "wrong_closure_share must be in [0, 1]";
   }
+  if (o.final_map_passes < 0 || !(o.final_map_hessian_scale >= 0.0)) {
+    return "final_map_passes and final_map_hessian_scale must be >= 0";
+  }
+  if (auto p = validate(o.final_map_refiner)) return "final_map_refiner." + *p;
   if (o.optimize_every_n_nodes < 1) return "optimize_every_n_nodes must be >= 1";
   if (o.optimizer_iterations < 1) return "optimizer_iterations must be >= 1";
   if (auto p = validate(o.local_sigmas, "local_sigmas")) return p;
@@ -656,7 +660,64 @@ struct LaserSlam::Impl {
   Status end_trajectory() {
     if (nodes.empty()) return Ok{};
     for (const int id : submaps.finish_all()) on_submap_finished(id);
-    if (stats.loop_closures > 0 || !graph.heading_priors.empty()) return optimize_graph(true);
+    if (stats.loop_closures > 0 || !graph.heading_priors.empty()) {
+      if (Status s = optimize_graph(true); !s) return s;
+    }
+    for (int pass = 0; pass < options.final_map_passes; ++pass) {
+      if (Status s = match_against_whole_map(); !s) return s;
+    }
+    return Ok{};
+  }
+
+  /// One pass of options.final_map_passes: every node refined in the map of all nodes at their
+  /// current poses, tied there (to a vertex of the map's frame, free to move), and the graph
+  /// optimised with those ties; the first node stays where it is (a start pose given for it,
+  /// start_trajectory, holds exactly).
+  /// The ties live in a copy of the graph: held to a fixed frame, they would pin the nodes where
+  /// this map puts them against the loop closures of a trajectory resumed later.
+  Status match_against_whole_map() {
+    const auto t0 = std::chrono::steady_clock::now();
+    ProbabilityGrid map;
+    RangeInsertOptions hits_only = options.map_insert;
+    hits_only.insert_free_space = false;
+    RangeInserter inserter(hits_only);
+    for (const Node& node : nodes) {
+      const Pose2& T = global_pose(node.vertex);
+      if (map.geometry().width() == 0) {
+        const double res = options.map_resolution_m;
+        map = ProbabilityGrid(GridGeometry({T.x - 10.0, T.y - 10.0}, res,
+                                           static_cast<int>(std::ceil(20.0 / res)),
+                                           static_cast<int>(std::ceil(20.0 / res))));
+      }
+      inserter.insert(map, T, node.points);
+    }
+    posegraph::PoseGraph tied = graph;
+    const int map_vertex = static_cast<int>(tied.poses.size());
+    tied.poses.push_back(Pose2{});
+    tied.ids.push_back(map_vertex);
+    for (const Node& node : nodes) {
+      const std::vector<Vec2> matching =
+          voxel_filter(node.points.returns_m, options.matching_voxel_m);
+      if (matching.empty()) continue;
+      const Pose2& T = global_pose(node.vertex);
+      const RefinedPose refined = refine_scan(map, T, T, matching, options.final_map_refiner);
+      const Eigen::Matrix3d information =
+          options.final_map_hessian_scale * refined.hessian + Eigen::Matrix3d::Identity();
+      tied.edges.push_back({map_vertex, node.vertex, refined.T_grid_robot, information, false});
+    }
+    posegraph::OptimizeOptions o;
+    o.max_iterations = options.optimizer_iterations;
+    o.huber_scale = options.huber_scale;
+    o.fixed_nodes = {nodes.front().vertex};
+    ++poses_version;
+    const auto t_optimize = std::chrono::steady_clock::now();
+    stats.whole_map_s += seconds_since(t0);
+    Result<posegraph::OptimizeSummary> summary = posegraph::optimize(tied, o);
+    stats.optimization_s += seconds_since(t_optimize);
+    if (!summary) return summary.error();
+    tied.poses.pop_back();
+    graph.poses = std::move(tied.poses);
+    graph.axis_rad = tied.axis_rad;
     return Ok{};
   }
 

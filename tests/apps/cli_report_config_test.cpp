@@ -107,7 +107,8 @@ nlohmann::json without_timing(nlohmann::json r) {
   r.erase("output");
   for (const char* section : {"slam", "posegraph"}) {
     if (!r.contains(section)) continue;
-    for (const char* key : {"matching_s", "loop_search_s", "optimization_s", "map_s", "time_s"}) {
+    for (const char* key :
+         {"matching_s", "loop_search_s", "optimization_s", "whole_map_s", "map_s", "time_s"}) {
       r[section].erase(key);
     }
   }

@@ -177,6 +177,23 @@ struct LaserSlamOptions {
   /// map before they come.
   ConstraintSigmas start_sigmas{0.1, 0.05};
 
+  /// After the final optimisation, this many passes of matching every node's scan against the
+  /// map of all nodes (GMapping's lesson: its particles match each scan against their whole map,
+  /// where tessera's local SLAM sees only the current submap, so drift inside a submap and
+  /// disagreements between overlapping submaps are left for the pose graph). A pass draws the
+  /// hits of every node at its current pose into one grid (no free space: rays cost two thirds
+  /// of the pass and changed no figure), refines each node's scan there (final_map_refiner,
+  /// tied loosely to where it is), ties the node to the refined pose with information
+  /// final_map_hessian_scale x the refinement's J^T J (+ identity, a 1 m / 1 rad floor), so a
+  /// scan along a corridor is tied only across it, and optimises the graph with those ties
+  /// (decision 0037). 0: none.
+  int final_map_passes = 3;
+  double final_map_hessian_scale = 400.0;
+  ScanRefinerOptions final_map_refiner{.occupied_space_weight = 1.0,
+                                       .translation_weight = 0.1,
+                                       .rotation_weight = 0.4,
+                                       .max_iterations = 5};
+
   /// The final map: every node's scan at its optimised pose.
   double map_resolution_m = 0.05;
   RangeInsertOptions map_insert{.hit_probability = 0.55,
@@ -212,6 +229,8 @@ struct LaserSlamStats {
   double matching_s = 0.0;  // local SLAM: matching and submap insertion
   double loop_search_s = 0.0;
   double optimization_s = 0.0;
+  double whole_map_s = 0.0;  // final_map_passes: the maps, the matches (their optimisation is
+                             // in optimization_s)
   double map_s = 0.0;
 };
 

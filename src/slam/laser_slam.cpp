@@ -660,37 +660,19 @@ struct LaserSlam::Impl {
   Status end_trajectory() {
     if (nodes.empty()) return Ok{};
     for (const int id : submaps.finish_all()) on_submap_finished(id);
-    if (stats.loop_closures > 0 || !graph.heading_priors.empty()) {
-      if (Status s = optimize_graph(true); !s) return s;
-    }
-    for (int pass = 0; pass < options.final_map_passes; ++pass) {
-      if (Status s = match_against_whole_map(); !s) return s;
-    }
+    if (stats.loop_closures > 0 || !graph.heading_priors.empty()) return optimize_graph(true);
     return Ok{};
   }
 
   /// One pass of options.final_map_passes: every node refined in the map of all nodes at their
-  /// current poses, tied there (to a vertex of the map's frame, free to move), and the graph
-  /// optimised with those ties; the first node stays where it is (a start pose given for it,
-  /// start_trajectory, holds exactly).
+  /// current poses (build_map()'s grid, the one the user gets), tied there (to a vertex of the
+  /// map's frame, free to move), and the graph optimised with those ties; the first node stays
+  /// where it is (a start pose given for it, start_trajectory, holds exactly).
   /// The ties live in a copy of the graph: held to a fixed frame, they would pin the nodes where
   /// this map puts them against the loop closures of a trajectory resumed later.
   Status match_against_whole_map() {
     const auto t0 = std::chrono::steady_clock::now();
-    ProbabilityGrid map;
-    RangeInsertOptions hits_only = options.map_insert;
-    hits_only.insert_free_space = false;
-    RangeInserter inserter(hits_only);
-    for (const Node& node : nodes) {
-      const Pose2& T = global_pose(node.vertex);
-      if (map.geometry().width() == 0) {
-        const double res = options.map_resolution_m;
-        map = ProbabilityGrid(GridGeometry({T.x - 10.0, T.y - 10.0}, res,
-                                           static_cast<int>(std::ceil(20.0 / res)),
-                                           static_cast<int>(std::ceil(20.0 / res))));
-      }
-      inserter.insert(map, T, node.points);
-    }
+    const ProbabilityGrid& map = probability_map();
     posegraph::PoseGraph tied = graph;
     const int map_vertex = static_cast<int>(tied.poses.size());
     tied.poses.push_back(Pose2{});
@@ -746,7 +728,10 @@ struct LaserSlam::Impl {
   // the last call: those are inserted into a kept grid, which gives the very map a full rebuild
   // gives (the same insertions in the same order) at the cost of the new nodes only. A live
   // robot asks for its map every half second; a rebuild each time cost it most of a core.
-  OccupancyGrid build_map() const {
+  OccupancyGrid build_map() const { return probability_map().to_occupancy_grid(2); }
+
+  /// build_map()'s probabilities (the kept grid, brought up to date).
+  const ProbabilityGrid& probability_map() const {
     if (map_cache_version != poses_version) {
       map_cache = ProbabilityGrid{};
       map_cache_nodes = 0;
@@ -769,7 +754,7 @@ struct LaserSlam::Impl {
       }
       inserter.insert(map, T, node.points);
     }
-    return map.to_occupancy_grid(2);
+    return map;
   }
 
   // The pose of scan `i` under the current graph: its anchor node's global pose and the local
@@ -782,6 +767,10 @@ struct LaserSlam::Impl {
 
   Result<LaserSlamResult> finish() {
     if (Status s = end_trajectory(); !s) return s.error();
+    // Once, at the very end: a session resumed over many trajectories replays them all first.
+    for (int pass = 0; pass < options.final_map_passes && !nodes.empty(); ++pass) {
+      if (Status s = match_against_whole_map(); !s) return s.error();
+    }
     LaserSlamResult out = result();
     out.graph = std::move(graph);
     out.vertex_scan = std::move(vertex_scan);

@@ -163,7 +163,7 @@ TEST(LaserSlam, ManhattanOptionImprovesTheMapInABuildingOfRightAngles) {
 // Decision 0037: after the final optimisation every scan is matched against the map of all of
 // them, where during the run it saw only its submap. With five scans a second and with one (as
 // sparse as a corrected log keeps them), the pass brings the trajectory closer to the truth
-// (measured 0.091 -> 0.062 m and 0.051 -> 0.011 m).
+// (measured 0.091 -> 0.052 m and 0.051 -> 0.018 m).
 TEST(LaserSlam, MatchingEveryScanAgainstTheWholeMapBringsItCloserToTheTruth) {
   OdometryErrorOptions odometry;
   odometry.heading_drift_rad_per_m = 0.02;
@@ -172,7 +172,7 @@ TEST(LaserSlam, MatchingEveryScanAgainstTheWholeMapBringsItCloserToTheTruth) {
     LaserSlamOptions o = small_submaps();
     o.final_map_passes = 0;
     const Result<LaserSlamResult> without = run_laser_slam(run.log, o);
-    o.final_map_passes = 3;
+    o.final_map_passes = 1;
     const Result<LaserSlamResult> with = run_laser_slam(run.log, o);
     ASSERT_TRUE(without.ok() && with.ok());
     const double without_m = mean_position_error(without->trajectory, run.truth);

@@ -177,17 +177,15 @@ struct LaserSlamOptions {
   /// map before they come.
   ConstraintSigmas start_sigmas{0.1, 0.05};
 
-  /// After the final optimisation, this many passes of matching every node's scan against the
+  /// At the end of the run (finish()), this many passes of matching every node's scan against the
   /// map of all nodes (GMapping's lesson: its particles match each scan against their whole map,
   /// where tessera's local SLAM sees only the current submap, so drift inside a submap and
-  /// disagreements between overlapping submaps are left for the pose graph). A pass draws the
-  /// hits of every node at its current pose into one grid (no free space: rays cost two thirds
-  /// of the pass and changed no figure), refines each node's scan there (final_map_refiner,
-  /// tied loosely to where it is), ties the node to the refined pose with information
-  /// final_map_hessian_scale x the refinement's J^T J (+ identity, a 1 m / 1 rad floor), so a
-  /// scan along a corridor is tied only across it, and optimises the graph with those ties
-  /// (decision 0037). 0: none.
-  int final_map_passes = 3;
+  /// disagreements between overlapping submaps are left for the pose graph). A pass refines each
+  /// node's scan in the final map at the current poses (final_map_refiner, tied loosely to where
+  /// it is), ties the node to the refined pose with information final_map_hessian_scale x the
+  /// refinement's J^T J (+ identity, a 1 m / 1 rad floor), so a scan along a corridor is tied
+  /// only across it, and optimises the graph with those ties (decision 0037). 0: none.
+  int final_map_passes = 1;
   double final_map_hessian_scale = 400.0;
   ScanRefinerOptions final_map_refiner{.occupied_space_weight = 1.0,
                                        .translation_weight = 0.1,

@@ -186,7 +186,7 @@ struct LaserSlamOptions {
   /// refinement's J^T J (+ identity, a 1 m / 1 rad floor), so a scan along a corridor is tied
   /// only across it, and optimises the graph with those ties (decision 0037). 0: none.
   int final_map_passes = 1;
-  double final_map_hessian_scale = 400.0;
+  double final_map_hessian_scale = 80.0;
   ScanRefinerOptions final_map_refiner{.occupied_space_weight = 1.0,
                                        .translation_weight = 0.1,
                                        .rotation_weight = 0.4,
@@ -227,7 +227,7 @@ struct LaserSlamStats {
   double matching_s = 0.0;  // local SLAM: matching and submap insertion
   double loop_search_s = 0.0;
   double optimization_s = 0.0;
-  double whole_map_s = 0.0;  // final_map_passes: the maps, the matches (their optimisation is
+  double whole_map_s = 0.0;  // final_map_passes: the map and the matches (their optimisation is
                              // in optimization_s)
   double map_s = 0.0;
 };

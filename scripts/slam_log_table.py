@@ -2,8 +2,10 @@
 """The real-log SLAM table of docs/slam-results.md (issue 12's protocol): every dev log gets a seeded
 drifting odometry from ../shared/tools/perturb_carmen.py (restamped 0.2 s per scan), `tessera slam`
 runs on it with its defaults, and ../shared/tools/ate2d.py scores the trajectory and the odometry
-against the corrected poses (rigid 2D ATE, m). Prints the Markdown rows and a summary; exits 1 when a
-run is worse than its odometry or fails.
+against the corrected poses (rigid 2D ATE, m). Where the building has Kummerle relations (FR079),
+`tessera eval relations --snap-s` also scores each run and the corrected poses themselves on them
+(decision 0036). Prints the Markdown rows and a summary; exits 1 when a run is worse than its
+odometry or fails.
 
 --sim runs the same protocol on simulated buildings instead: bench/slam/simulated_corrected_log
 drives a covering tour of a floor plan with a SICK-class laser and writes the scans GMapping would
@@ -153,7 +155,8 @@ def relation_error(tessera, trajectory, name, out):
 def on_log_stamps(tum, log, dst):
     """The trajectory of a restamped run (scan k at 0.2 k s) with the corrected log's own stamps,
     which the relations' clock is known against."""
-    stamps = [line.split()[-1] for line in open(log) if line.startswith("FLASER")]
+    with open(log) as f:
+        stamps = [line.split()[-1] for line in f if line.startswith("FLASER")]
     with open(tum) as f, open(dst, "w") as g:
         for line in f:
             if line.startswith("#") or not line.strip():

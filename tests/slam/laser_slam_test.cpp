@@ -161,9 +161,10 @@ TEST(LaserSlam, ManhattanOptionImprovesTheMapInABuildingOfRightAngles) {
 }
 
 // Decision 0037's option (off by default): after the final optimisation every scan is matched
-// against the map of all of them, where during the run it saw only its submap. With five scans a second and with one (as
-// sparse as a corrected log keeps them), the pass brings the trajectory closer to the truth
-// (measured 0.091 -> 0.079 m and 0.051 -> 0.048 m; with 5x the default's ties, 0.052 and 0.018 m).
+// against the map of all of them, where during the run it saw only its submap. With five scans a
+// second and with one (as sparse as a corrected log keeps them), the pass brings the trajectory
+// closer to the truth (measured 0.091 -> 0.079 m and 0.051 -> 0.048 m; with 5x the option's
+// ties, 0.052 and 0.018 m).
 TEST(LaserSlam, MatchingEveryScanAgainstTheWholeMapBringsItCloserToTheTruth) {
   OdometryErrorOptions odometry;
   odometry.heading_drift_rad_per_m = 0.02;

@@ -46,6 +46,9 @@ LOGS = {
     "intel": ("maps/radish_carmen/intel-corrected.log.gz", "Intel corrected", 0.061, 0.57, 0.10),
 }
 
+# The protocol restamps scan k at k * RESTAMP_S (perturb_carmen.py --restamp).
+RESTAMP_S = 0.2
+
 # Kummerle et al. 2009 relations (hand-checked scan matches, the ground truth where a log has them):
 # name -> (relations file relative to the data folder, seconds from the corrected log's stamps to
 # the relations' clock, snap bound (s)). FR079's log is stamped by the logger, 1211.43-1211.50 s
@@ -153,8 +156,8 @@ def relation_error(tessera, trajectory, name, out):
 
 
 def on_log_stamps(tum, log, dst):
-    """The trajectory of a restamped run (scan k at 0.2 k s) with the corrected log's own stamps,
-    which the relations' clock is known against."""
+    """The trajectory of a restamped run (scan k at k * RESTAMP_S) with the corrected log's own
+    stamps, which the relations' clock is known against."""
     with open(log) as f:
         stamps = [line.split()[-1] for line in f if line.startswith("FLASER")]
     with open(tum) as f, open(dst, "w") as g:
@@ -162,7 +165,7 @@ def on_log_stamps(tum, log, dst):
             if line.startswith("#") or not line.strip():
                 continue
             v = line.split()
-            g.write(" ".join([stamps[round(float(v[0]) / 0.2)]] + v[1:]) + "\n")
+            g.write(" ".join([stamps[round(float(v[0]) / RESTAMP_S)]] + v[1:]) + "\n")
     return dst
 
 
@@ -171,7 +174,7 @@ def run_one(tessera, slam_args, out_root, name, seed, drift, gmapping_dir=None):
     case.mkdir(parents=True, exist_ok=True)
     log, truth = case / "input.log", case / "truth.xyt"
     subprocess.run([sys.executable, str(TOOLS / "perturb_carmen.py"), str(plain_log(name, out_root)),
-                    str(log), "--seed", str(seed), "--restamp", "0.2", "--drift-deg-per-m",
+                    str(log), "--seed", str(seed), "--restamp", str(RESTAMP_S), "--drift-deg-per-m",
                     str(drift), "--truth", str(truth)], check=True)
     odometry_xyt(log, case / "odometry.xyt")
     t0 = time.monotonic()

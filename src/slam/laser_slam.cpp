@@ -445,14 +445,20 @@ struct LaserSlam::Impl {
     return removed;
   }
 
+  /// What every optimisation of the graph is run with.
+  [[nodiscard]] posegraph::OptimizeOptions optimizer_options() const {
+    posegraph::OptimizeOptions o;
+    o.max_iterations = options.optimizer_iterations;
+    o.huber_scale = options.huber_scale;
+    return o;
+  }
+
   /// `last`: the final optimisation, the only one after which outliers are switched off (earlier,
   /// a correct closure after a long drift can still be far from a graph that has not yet taken
   /// it in).
   Status optimize_graph(bool last) {
     const auto t0 = std::chrono::steady_clock::now();
-    posegraph::OptimizeOptions o;
-    o.max_iterations = options.optimizer_iterations;
-    o.huber_scale = options.huber_scale;
+    const posegraph::OptimizeOptions o = optimizer_options();
     ++poses_version;  // every node may move: the map cache starts again
     Result<posegraph::OptimizeSummary> summary = posegraph::optimize(graph, o);
     if (summary && last && switch_off_outliers() > 0) summary = posegraph::optimize(graph, o);
@@ -687,9 +693,7 @@ struct LaserSlam::Impl {
           options.final_map_hessian_scale * refined.hessian + Eigen::Matrix3d::Identity();
       tied.edges.push_back({map_vertex, node.vertex, refined.T_grid_robot, information, false});
     }
-    posegraph::OptimizeOptions o;
-    o.max_iterations = options.optimizer_iterations;
-    o.huber_scale = options.huber_scale;
+    posegraph::OptimizeOptions o = optimizer_options();
     o.fixed_nodes = {nodes.front().vertex};
     ++poses_version;
     const auto t_optimize = std::chrono::steady_clock::now();

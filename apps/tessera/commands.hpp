@@ -211,6 +211,7 @@ class SlamCommand : public Command {
   std::optional<double> cell_m_;  // default: 0.05 m for a log, the world's cell for a simulated run
   bool no_loop_closure_ = false;
   bool manhattan_ = false;  // Manhattan heading priors (issue 18 item 7)
+  bool whole_map_ = false;  // one pass of every scan against the whole map (decision 0037)
   OutputStreams streams_;   // --record, --serve
   bool quiet_ = false;
   // --ros: the live SLAM node on Cyclone DDS (cmd_slam_ros.cpp).

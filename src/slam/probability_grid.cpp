@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "tessera/grid/ray_cast.hpp"
@@ -142,6 +143,7 @@ std::optional<std::string> validate(const RangeInsertOptions& o) {
     return "miss_probability must be in (0, 0.5)";
   }
   if (!(o.miss_margin_m >= 0.0)) return "miss_margin_m must be >= 0";
+  if (!(o.miss_inset_m >= 0.0)) return "miss_inset_m must be >= 0";
   if (!(o.join_returns_within_m >= 0.0)) return "join_returns_within_m must be >= 0";
   return std::nullopt;
 }
@@ -150,6 +152,19 @@ RangeInserter::RangeInserter(const RangeInsertOptions& options)
     : options_(options),
       hit_(make_update_table(options.hit_probability)),
       miss_(make_update_table(options.miss_probability)) {}
+
+// The shallowest incidence the miss band is widened for: at 0.1 (5.7 deg) the band along the ray
+// is ten times its width across the surface.
+constexpr double kMinSinIncidence = 0.1;
+
+/// Whether the line through `from` along unit `u` crosses cell c's square shrunk by inset_m on
+/// every side: the line's distance from the square's centre is within the square's half-width
+/// seen across the line (its support in the line's normal). inset_m <= 0: every cell.
+bool crosses_inner(const GridGeometry& g, Cell c, Vec2 from, Vec2 u, double inset_m) {
+  if (inset_m <= 0.0) return true;
+  const double half_width = 0.5 * g.resolution_m() - inset_m;
+  return std::abs(u.cross(g.center_of(c) - from)) <= half_width * (std::abs(u.x) + std::abs(u.y));
+}
 
 void RangeInserter::insert(ProbabilityGrid& grid, const Pose2& T_grid_robot,
                            const ScanPoints& points) const {
@@ -175,17 +190,47 @@ void RangeInserter::insert(ProbabilityGrid& grid, const Pose2& T_grid_robot,
     }
   }
   if (options_.insert_free_space) {
-    for (const Vec2& p : returns) {
+    const double inset_m = options_.miss_inset_m;
+    const bool beams_known = points.return_beams.size() == returns.size();
+    for (std::size_t i = 0; i < returns.size(); ++i) {
+      const Vec2& p = returns[i];
       const Cell end = g.cell_at_unchecked(p);
-      const double last_miss_m = (p - origin).norm() - options_.miss_margin_m;
+      const double range_m = (p - origin).norm();
+      double margin_m = options_.miss_margin_m;
+      if (margin_m > 0.0 && beams_known && range_m > 0.0) {
+        // The band is measured across the surface the return lies on, as the nearer of the
+        // neighbouring beams' returns shows it (the other may lie beyond an edge). A ray that
+        // meets a wall at a shallow angle runs through the cells along the wall's face for a
+        // long way before its return: without this, one such ray clears the face's cells.
+        Vec2 along{0.0, 0.0};
+        double best2 = std::numeric_limits<double>::infinity();
+        for (const std::size_t k : {i - 1, i + 1}) {  // i - 1 wraps to SIZE_MAX for i = 0
+          if (k >= returns.size() || std::abs(points.return_beams[k] - points.return_beams[i]) != 1) {
+            continue;
+          }
+          const Vec2 d = returns[k] - p;
+          if (d.dot(d) < best2) best2 = d.dot(d), along = d;
+        }
+        if (best2 > 0.0 && std::isfinite(best2)) {
+          const double sin_incidence = std::abs((p - origin).cross(along)) / (range_m * std::sqrt(best2));
+          margin_m /= std::max(sin_incidence, kMinSinIncidence);
+        }
+      }
+      const double last_miss_m = range_m - margin_m;
+      const Vec2 u = (p - origin) * (1.0 / range_m);
       traverse_ray(g, origin, p, [&](Cell c, double t_enter_m, double) {
         if (t_enter_m > last_miss_m) return false;  // this cell and the rest lie in the band
-        if (!(c == end)) grid.apply(c, miss_);
+        if (!(c == end) && crosses_inner(g, c, origin, u, inset_m)) grid.apply(c, miss_);
         return true;
       });
     }
     for (const Vec2& p : misses) {
-      traverse_ray(g, origin, p, [&](Cell c, double, double) { grid.apply(c, miss_); });
+      const double length_m = (p - origin).norm();
+      if (!(length_m > 0.0)) continue;
+      const Vec2 u = (p - origin) * (1.0 / length_m);
+      traverse_ray(g, origin, p, [&](Cell c, double, double) {
+        if (crosses_inner(g, c, origin, u, inset_m)) grid.apply(c, miss_);
+      });
     }
   }
   grid.finish_update();

@@ -96,11 +96,66 @@ TEST(RangeInserter, JoinsReturnsOfNeighbouringBeams) {
   EXPECT_EQ(hit_cells(0.4), 4);      // too far apart to be one surface
 }
 
+// A wall's face on a cell line (y = 0, solid below) seen at 7 degrees from 4 m: the returns land
+// 1 cm inside the wall, so each ray runs 8 cm through the row of the wall's face before its
+// return. The band without misses is measured across the surface its neighbours show, so those
+// face cells stay as they were; a return with no neighbour keeps the band along its ray (the old
+// rule, which clears the face cell), and a return seen head-on keeps its 3 cm.
+TEST(RangeInserter, AShallowRayDoesNotClearTheFaceOfTheWallItMeets) {
+  RangeInsertOptions o;
+  o.miss_margin_m = 0.03;
+  const Pose2 T_grid_robot{0.0, 0.5, 0.0};
+  const auto face_cell_known = [&](std::vector<Vec2> returns_m, std::vector<int> beams) {
+    ProbabilityGrid grid(GridGeometry({-1.0, -1.0}, 0.05, 120, 40));
+    ScanPoints points;
+    for (Vec2& p : returns_m) p = T_grid_robot.inverse() * p;
+    points.returns_m = std::move(returns_m);
+    points.return_beams = std::move(beams);
+    RangeInserter(o).insert(grid, T_grid_robot, points);
+    const GridGeometry& g = grid.geometry();
+    EXPECT_GT(grid.probability(g.cell_at_unchecked({4.0, -0.01})), 0.5);  // the return's cell
+    return grid.known(g.cell_at_unchecked({3.925, -0.025}));  // the ray enters it at x = 3.92
+  };
+  EXPECT_FALSE(face_cell_known({{4.0, -0.01}, {4.4, -0.01}}, {0, 1}));
+  EXPECT_TRUE(face_cell_known({{4.0, -0.01}, {4.4, -0.01}}, {0, 2})) << "not neighbours";
+
+  ProbabilityGrid grid(GridGeometry({-1.0, -1.0}, 0.05, 120, 40));
+  ScanPoints head_on;  // a wall across the ray at x = 2.01: the band stays 3 cm along the ray
+  head_on.returns_m = {{2.01, -0.2}, {2.01, 0.025}, {2.01, 0.25}};
+  head_on.return_beams = {0, 1, 2};
+  RangeInserter(o).insert(grid, Pose2{}, head_on);
+  const GridGeometry& g = grid.geometry();
+  EXPECT_LT(grid.probability(g.cell_at_unchecked({1.975, 0.025})), 0.5);  // entered at 1.95 m
+}
+
+// A ray that runs 2 mm inside a row of cells, along its edge (a wall face on a cell line, passed by
+// a ray a pose error of a few millimetres away), leaves them as they were once miss_inset_m says
+// so; a ray through their middle clears them either way.
+TEST(RangeInserter, ARayAlongACellsEdgeLeavesTheCellWithAnInset) {
+  const auto row_known = [](double ray_y_m, double inset_m) {
+    ProbabilityGrid grid(GridGeometry({-1.0, -1.0}, 0.05, 80, 40));
+    ScanPoints points;
+    points.origin_m = {0.0, ray_y_m};
+    points.misses_m = {{2.0, ray_y_m}};
+    RangeInsertOptions o;
+    o.miss_inset_m = inset_m;
+    RangeInserter(o).insert(grid, Pose2{}, points);
+    return grid.known(grid.geometry().cell_at_unchecked({1.0, 0.025}));
+  };
+  EXPECT_TRUE(row_known(0.002, 0.0));
+  EXPECT_FALSE(row_known(0.002, 0.005));
+  EXPECT_TRUE(row_known(0.025, 0.005));
+  EXPECT_TRUE(row_known(0.048, 0.0));
+  EXPECT_FALSE(row_known(0.048, 0.005));
+}
+
 TEST(RangeInsertOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
   EXPECT_FALSE(validate(RangeInsertOptions{}).has_value());
   RangeInsertOptions o;
   o.miss_probability = 0.6;
   EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("miss_probability"));
+  EXPECT_THAT(validate(RangeInsertOptions{.miss_inset_m = -0.001}).value_or(""),
+              ::testing::HasSubstr("miss_inset_m"));
 }
 
 }  // namespace

@@ -199,7 +199,8 @@ struct LaserSlamOptions {
   RangeInsertOptions map_insert{.hit_probability = 0.55,
                                 .miss_probability = 0.49,
                                 .insert_free_space = true,
-                                .miss_margin_m = 0.03};
+                                .miss_margin_m = 0.03,
+                                .miss_inset_m = 0.005};
 
   /// Called after every scan (on the calling thread).
   std::function<void(const SlamProgress&)> progress;

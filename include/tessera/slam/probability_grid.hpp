@@ -101,6 +101,9 @@ struct RangeInsertOptions {
   /// that land (by noise) in the far one, and the map's walls shift away from the sensor by up to
   /// half a cell (the same range band as ScanInsertOptions::free_margin_m, decision 0003).
   double miss_margin_m = 0.0;
+  /// A cell gets a miss only when the ray passes at least this far inside its square: a ray that
+  /// runs along a wall's face, or clips a cell's corner, leaves the cell as it was.
+  double miss_inset_m = 0.0;
   /// Returns of neighbouring beams closer than this are joined: every cell of the segment between
   /// them gets a hit, so a wall is a continuous line of cells instead of one cell per beam. Without
   /// it a grid built from few viewpoints has its beams' footprints as local optima: matching a scan

@@ -61,9 +61,8 @@ SlamCommand::SlamCommand(CLI::App& app) {
   sub_->add_flag("--manhattan", manhattan_,
                  "Walls at right angles: a heading prior on every node whose scan shows a "
                  "dominant wall direction (docs/slam-manhattan.md)");
-  sub_->add_flag("--whole-map", whole_map_,
-                 "At the end, match every scan against the whole map once more and optimise "
-                 "again (GMapping's lesson; decision 0037): a closer trajectory, sharper walls");
+  sub_->add_flag("--no-whole-map", no_whole_map_,
+                 "Skip the final match of every scan against the whole map (decision 0037)");
   add_output_stream_options(*sub_, streams_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
   add_ros_options();
@@ -83,10 +82,7 @@ int SlamCommand::run() const {
     return report_error(usage_error("--relations scores a log: it needs --log or --bag"));
   }
   if (Status s = check_session_options(); !s) return report_error(s.error());
-  slam::LaserSlamOptions options;
-  options.loop_closure = !no_loop_closure_;
-  options.manhattan = manhattan_;
-  options.final_map_passes = whole_map_ ? 1 : 0;
+  slam::LaserSlamOptions options = method_options();
 
   // Inputs first: a bad log, world or relations file must leave nothing behind.
   std::optional<LaserLog> read_log;

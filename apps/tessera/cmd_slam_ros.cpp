@@ -37,6 +37,15 @@ void SlamCommand::add_ros_options() {
   add_live_node_options(*sub_, ns_, domain_, network_, idle_exit_s_);
 }
 
+// Shared with run(): a live node maps as the same flags map a log.
+slam::LaserSlamOptions SlamCommand::method_options() const {
+  slam::LaserSlamOptions options;
+  options.loop_closure = !no_loop_closure_;
+  options.manhattan = manhattan_;
+  if (no_whole_map_) options.final_map_passes = 0;
+  return options;
+}
+
 int SlamCommand::run_ros() const {
   if (input_.given() || world_.file) {
     return report_error(usage_error("--ros maps the topics: give no --log, --bag or --world"));
@@ -45,9 +54,9 @@ int SlamCommand::run_ros() const {
   if (Status s = input_.check(/*live=*/true); !s) return report_error(s.error());
   nodes::SlamNodeOptions options;
   options.ns = ns_;
+  options.slam = method_options();
   options.slam.use_odometry = !input_.no_odometry;
   options.base_frame = input_.base_frame;
-  options.slam.loop_closure = !no_loop_closure_;
   options.slam.map_resolution_m = cell_m_.value_or(0.05);
   std::optional<std::vector<Relation>> relations;
   if (relations_) {

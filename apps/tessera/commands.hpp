@@ -210,9 +210,12 @@ class SlamCommand : public Command {
   double time_offset_s_ = 0.0;
   std::optional<double> cell_m_;  // default: 0.05 m for a log, the world's cell for a simulated run
   bool no_loop_closure_ = false;
-  bool manhattan_ = false;  // Manhattan heading priors (issue 18 item 7)
-  bool whole_map_ = false;  // one pass of every scan against the whole map (decision 0037)
-  OutputStreams streams_;   // --record, --serve
+  bool manhattan_ = false;     // Manhattan heading priors (issue 18 item 7)
+  bool no_whole_map_ = false;  // no final pass of every scan against the whole map (0037)
+  /// The method's settings the flags choose (loop closure, Manhattan priors, the whole-map pass),
+  /// the same offline and live.
+  [[nodiscard]] slam::LaserSlamOptions method_options() const;
+  OutputStreams streams_;  // --record, --serve
   bool quiet_ = false;
   // --ros: the live SLAM node on Cyclone DDS (cmd_slam_ros.cpp).
   void add_ros_options();

@@ -772,7 +772,10 @@ struct LaserSlam::Impl {
   Result<LaserSlamResult> finish() {
     if (Status s = end_trajectory(); !s) return s.error();
     // Once, at the very end: a session resumed over many trajectories replays them all first.
-    for (int pass = 0; pass < options.final_map_passes && !nodes.empty(); ++pass) {
+    // Local SLAM alone (no loop closure) stays local: the pass corrects the graph as a closure
+    // does.
+    const int passes = options.loop_closure ? options.final_map_passes : 0;
+    for (int pass = 0; pass < passes && !nodes.empty(); ++pass) {
       if (Status s = match_against_whole_map(); !s) return s.error();
     }
     LaserSlamResult out = result();

@@ -153,9 +153,36 @@ RangeInserter::RangeInserter(const RangeInsertOptions& options)
       hit_(make_update_table(options.hit_probability)),
       miss_(make_update_table(options.miss_probability)) {}
 
+namespace {
+
 // The shallowest incidence the miss band is widened for: at 0.1 (5.7 deg) the band along the ray
 // is ten times its width across the surface.
 constexpr double kMinSinIncidence = 0.1;
+
+/// The band before return i (seen from origin, range_m away) in which its ray gives no miss:
+/// margin_m across the surface the return lies on, as the nearer of the neighbouring beams'
+/// returns shows it (the other may lie beyond an edge), so margin_m / sin(incidence) along the ray.
+/// A ray that meets a wall at a shallow angle runs through the cells along the wall's face for a
+/// long way before its return: measured along the ray, the band lets it clear them. A return
+/// without a neighbouring beam keeps margin_m along its ray.
+double miss_band_m(const std::vector<Vec2>& returns, const std::vector<int>& beams, std::size_t i,
+                   Vec2 origin, double range_m, double margin_m) {
+  if (margin_m <= 0.0) return margin_m;
+  Vec2 along{0.0, 0.0};
+  double best2 = std::numeric_limits<double>::infinity();
+  for (const std::size_t k : {i - 1, i + 1}) {  // i - 1 wraps to SIZE_MAX for i = 0
+    if (k >= returns.size() || std::abs(beams[k] - beams[i]) != 1) continue;
+    const Vec2 d = returns[k] - returns[i];
+    if (d.dot(d) < best2) {
+      best2 = d.dot(d);
+      along = d;
+    }
+  }
+  if (!(best2 > 0.0) || !std::isfinite(best2)) return margin_m;
+  const double sin_incidence =
+      std::abs((returns[i] - origin).cross(along)) / (range_m * std::sqrt(best2));
+  return margin_m / std::max(sin_incidence, kMinSinIncidence);
+}
 
 /// Whether the line through `from` along unit `u` crosses cell c's square shrunk by inset_m on
 /// every side: the line's distance from the square's centre is within the square's half-width
@@ -165,6 +192,8 @@ bool crosses_inner(const GridGeometry& g, Cell c, Vec2 from, Vec2 u, double inse
   const double half_width = 0.5 * g.resolution_m() - inset_m;
   return std::abs(u.cross(g.center_of(c) - from)) <= half_width * (std::abs(u.x) + std::abs(u.y));
 }
+
+}  // namespace
 
 void RangeInserter::insert(ProbabilityGrid& grid, const Pose2& T_grid_robot,
                            const ScanPoints& points) const {
@@ -196,26 +225,10 @@ void RangeInserter::insert(ProbabilityGrid& grid, const Pose2& T_grid_robot,
       const Vec2& p = returns[i];
       const Cell end = g.cell_at_unchecked(p);
       const double range_m = (p - origin).norm();
-      double margin_m = options_.miss_margin_m;
-      if (margin_m > 0.0 && beams_known && range_m > 0.0) {
-        // The band is measured across the surface the return lies on, as the nearer of the
-        // neighbouring beams' returns shows it (the other may lie beyond an edge). A ray that
-        // meets a wall at a shallow angle runs through the cells along the wall's face for a
-        // long way before its return: without this, one such ray clears the face's cells.
-        Vec2 along{0.0, 0.0};
-        double best2 = std::numeric_limits<double>::infinity();
-        for (const std::size_t k : {i - 1, i + 1}) {  // i - 1 wraps to SIZE_MAX for i = 0
-          if (k >= returns.size() || std::abs(points.return_beams[k] - points.return_beams[i]) != 1) {
-            continue;
-          }
-          const Vec2 d = returns[k] - p;
-          if (d.dot(d) < best2) best2 = d.dot(d), along = d;
-        }
-        if (best2 > 0.0 && std::isfinite(best2)) {
-          const double sin_incidence = std::abs((p - origin).cross(along)) / (range_m * std::sqrt(best2));
-          margin_m /= std::max(sin_incidence, kMinSinIncidence);
-        }
-      }
+      if (!(range_m > 0.0)) continue;
+      const double margin_m = beams_known ? miss_band_m(returns, points.return_beams, i, origin,
+                                                        range_m, options_.miss_margin_m)
+                                          : options_.miss_margin_m;
       const double last_miss_m = range_m - margin_m;
       const Vec2 u = (p - origin) * (1.0 / range_m);
       traverse_ray(g, origin, p, [&](Cell c, double t_enter_m, double) {

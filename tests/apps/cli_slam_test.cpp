@@ -8,6 +8,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "cli_run.hpp"
 #include "support/data.hpp"
@@ -60,6 +61,29 @@ TEST(CliSlam, WritesMapTrajectoryGraphAndReport) {
   EXPECT_GT(report["timing"]["realtime_factor"].get<double>(), 0.0);
   EXPECT_GT(report["timing"]["data_duration_s"].get<double>(), 20.0);
   EXPECT_FALSE(report.contains("relations"));
+}
+
+// The last step, every scan against the whole map (decision 0037), runs by default and is
+// listed in the report; --no-whole-map skips it and leaves a different trajectory.
+TEST(CliSlam, TheWholeMapPassRunsUnlessTurnedOff) {
+  TESSERA_REQUIRE_DATA(support::intel_log());
+  TempDir dir;
+  const auto log = intel_slice(dir, 150);
+  const auto run_slam = [&](const std::string& extra, const std::string& name) {
+    const auto out = dir.path() / name;
+    const support::CliRun run =
+        run_cli("slam --quiet --log " + log.string() + extra + " --out " + out.string());
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return std::pair{nlohmann::json::parse(read_bytes(out / "report.json")),
+                     read_bytes(out / "trajectory.txt")};
+  };
+  const auto [with, with_trajectory] = run_slam("", "with");
+  const auto [without, without_trajectory] = run_slam(" --no-whole-map", "without");
+  EXPECT_EQ(with["options"]["final_map_passes"], 1);
+  EXPECT_GT(with["slam"]["whole_map_s"].get<double>(), 0.0);
+  EXPECT_EQ(without["options"]["final_map_passes"], 0);
+  EXPECT_EQ(without["slam"]["whole_map_s"].get<double>(), 0.0);
+  EXPECT_NE(with_trajectory, without_trajectory);
 }
 
 TEST(CliSlam, BadLogIsAnInputErrorAndWritesNothing) {

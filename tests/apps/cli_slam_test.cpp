@@ -133,6 +133,9 @@ TEST(CliSlam, SimulatedRunIsScoredAgainstItsGroundTruth) {
   EXPECT_GT(map["occupied_compared"].get<int>(), 500);
   EXPECT_LT(map["occupied_as_empty_share"].get<double>(), 0.005);
   EXPECT_DOUBLE_EQ(report["options"]["map_resolution_m"].get<double>(), 0.05);  // the world's cell
+  // The final map's free space: no miss within 3 cm of a surface or 5 mm of a cell's edge.
+  EXPECT_DOUBLE_EQ(report["options"]["map_miss_margin_m"].get<double>(), 0.03);
+  EXPECT_DOUBLE_EQ(report["options"]["map_miss_inset_m"].get<double>(), 0.005);
   // The effective evidence of a hit, and how it grows when the scans are far apart.
   EXPECT_DOUBLE_EQ(report["options"]["submap_hit_probability"].get<double>(), 0.55);
   EXPECT_DOUBLE_EQ(report["options"]["hit_evidence_step_m"].get<double>(), 0.35);

@@ -184,14 +184,27 @@ double miss_band_m(const std::vector<Vec2>& returns, const std::vector<int>& bea
   return margin_m / std::max(sin_incidence, kMinSinIncidence);
 }
 
-/// Whether the line through `from` along unit `u` crosses cell c's square shrunk by inset_m on
-/// every side: the line's distance from the square's centre is within the square's half-width
-/// seen across the line (its support in the line's normal). inset_m <= 0: every cell.
-bool crosses_inner(const GridGeometry& g, Cell c, Vec2 from, Vec2 u, double inset_m) {
-  if (inset_m <= 0.0) return true;
-  const double half_width = 0.5 * g.resolution_m() - inset_m;
-  return std::abs(u.cross(g.center_of(c) - from)) <= half_width * (std::abs(u.x) + std::abs(u.y));
-}
+/// A ray's test for the cells it may clear: the line through `from` along unit `u` must cross a
+/// cell's square shrunk by inset_m on every side, i.e. pass within the shrunk square's support
+/// across the line (half its width times |u.x| + |u.y|) of the square's centre. The line's signed
+/// distance from cell (x, y)'s centre, u x (centre - from), is linear in x and y: three numbers per
+/// ray, two multiply-adds per cell. inset_m <= 0: every cell the ray visits.
+class InnerCrossing {
+ public:
+  InnerCrossing(const GridGeometry& g, Vec2 from, Vec2 u, double inset_m)
+      : every_cell_(inset_m <= 0.0),
+        reach_((0.5 * g.resolution_m() - inset_m) * (std::abs(u.x) + std::abs(u.y))),
+        per_x_(-u.y * g.resolution_m()),
+        per_y_(u.x * g.resolution_m()),
+        at_origin_(u.cross(g.center_of({0, 0}) - from)) {}
+  [[nodiscard]] bool operator()(Cell c) const {
+    return every_cell_ || std::abs(at_origin_ + per_x_ * c.x + per_y_ * c.y) <= reach_;
+  }
+
+ private:
+  bool every_cell_;
+  double reach_, per_x_, per_y_, at_origin_;
+};
 
 }  // namespace
 
@@ -230,19 +243,19 @@ void RangeInserter::insert(ProbabilityGrid& grid, const Pose2& T_grid_robot,
                                                         range_m, options_.miss_margin_m)
                                           : options_.miss_margin_m;
       const double last_miss_m = range_m - margin_m;
-      const Vec2 u = (p - origin) * (1.0 / range_m);
+      const InnerCrossing clears(g, origin, (p - origin) * (1.0 / range_m), inset_m);
       traverse_ray(g, origin, p, [&](Cell c, double t_enter_m, double) {
         if (t_enter_m > last_miss_m) return false;  // this cell and the rest lie in the band
-        if (!(c == end) && crosses_inner(g, c, origin, u, inset_m)) grid.apply(c, miss_);
+        if (!(c == end) && clears(c)) grid.apply(c, miss_);
         return true;
       });
     }
     for (const Vec2& p : misses) {
       const double length_m = (p - origin).norm();
       if (!(length_m > 0.0)) continue;
-      const Vec2 u = (p - origin) * (1.0 / length_m);
+      const InnerCrossing clears(g, origin, (p - origin) * (1.0 / length_m), inset_m);
       traverse_ray(g, origin, p, [&](Cell c, double, double) {
-        if (crosses_inner(g, c, origin, u, inset_m)) grid.apply(c, miss_);
+        if (clears(c)) grid.apply(c, miss_);
       });
     }
   }

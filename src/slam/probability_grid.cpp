@@ -184,26 +184,32 @@ double miss_band_m(const std::vector<Vec2>& returns, const std::vector<int>& bea
   return margin_m / std::max(sin_incidence, kMinSinIncidence);
 }
 
-/// A ray's test for the cells it may clear: the line through `from` along unit `u` must cross a
-/// cell's square shrunk by inset_m on every side, i.e. pass within the shrunk square's support
-/// across the line (half its width times |u.x| + |u.y|) of the square's centre. The line's signed
-/// distance from cell (x, y)'s centre, u x (centre - from), is linear in x and y: three numbers per
-/// ray, two multiply-adds per cell. inset_m <= 0: every cell the ray visits.
+/// A ray's test for the cells it may clear: the line from `from` to `to` must cross a cell's
+/// square shrunk by inset_m on every side, i.e. pass within the shrunk square's support across the
+/// line (half its width times |u.x| + |u.y|, u the unit direction) of the square's centre. The
+/// line's signed distance from cell (x, y)'s centre, u x (centre - from), is linear in x and y:
+/// three numbers per ray, two multiply-adds per cell. inset_m <= 0: every cell the ray visits, at
+/// no cost per ray (the submaps' insertion); a ray of no length clears no cell.
 class InnerCrossing {
  public:
-  InnerCrossing(const GridGeometry& g, Vec2 from, Vec2 u, double inset_m)
-      : every_cell_(inset_m <= 0.0),
-        reach_((0.5 * g.resolution_m() - inset_m) * (std::abs(u.x) + std::abs(u.y))),
-        per_x_(-u.y * g.resolution_m()),
-        per_y_(u.x * g.resolution_m()),
-        at_origin_(u.cross(g.center_of({0, 0}) - from)) {}
+  InnerCrossing(const GridGeometry& g, Vec2 from, Vec2 to, double inset_m)
+      : every_cell_(inset_m <= 0.0) {
+    if (every_cell_) return;
+    const double length_m = (to - from).norm();
+    if (!(length_m > 0.0)) return;  // reach_ stays negative: nothing is crossed
+    const Vec2 u = (to - from) * (1.0 / length_m);
+    reach_ = (0.5 * g.resolution_m() - inset_m) * (std::abs(u.x) + std::abs(u.y));
+    per_x_ = -u.y * g.resolution_m();
+    per_y_ = u.x * g.resolution_m();
+    at_origin_ = u.cross(g.center_of({0, 0}) - from);
+  }
   [[nodiscard]] bool operator()(Cell c) const {
     return every_cell_ || std::abs(at_origin_ + per_x_ * c.x + per_y_ * c.y) <= reach_;
   }
 
  private:
   bool every_cell_;
-  double reach_, per_x_, per_y_, at_origin_;
+  double reach_ = -1.0, per_x_ = 0.0, per_y_ = 0.0, at_origin_ = 0.0;
 };
 
 }  // namespace
@@ -243,7 +249,7 @@ void RangeInserter::insert(ProbabilityGrid& grid, const Pose2& T_grid_robot,
                                                         range_m, options_.miss_margin_m)
                                           : options_.miss_margin_m;
       const double last_miss_m = range_m - margin_m;
-      const InnerCrossing clears(g, origin, (p - origin) * (1.0 / range_m), inset_m);
+      const InnerCrossing clears(g, origin, p, inset_m);
       traverse_ray(g, origin, p, [&](Cell c, double t_enter_m, double) {
         if (t_enter_m > last_miss_m) return false;  // this cell and the rest lie in the band
         if (!(c == end) && clears(c)) grid.apply(c, miss_);
@@ -251,9 +257,7 @@ void RangeInserter::insert(ProbabilityGrid& grid, const Pose2& T_grid_robot,
       });
     }
     for (const Vec2& p : misses) {
-      const double length_m = (p - origin).norm();
-      if (!(length_m > 0.0)) continue;
-      const InnerCrossing clears(g, origin, (p - origin) * (1.0 / length_m), inset_m);
+      const InnerCrossing clears(g, origin, p, inset_m);
       traverse_ray(g, origin, p, [&](Cell c, double, double) {
         if (clears(c)) grid.apply(c, miss_);
       });

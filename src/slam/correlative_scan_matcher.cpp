@@ -1,8 +1,10 @@
 #include "tessera/slam/correlative_scan_matcher.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace tessera::slam {
 namespace {
@@ -38,6 +40,20 @@ void discretize(const GridGeometry& g, const Pose2& prior, double angle_offset_r
   for (const Vec2& p : points) {
     cells.push_back(g.cell_at_unchecked({T.x + c * p.x - s * p.y, T.y + s * p.x + c * p.y}));
   }
+}
+
+/// The smallest and largest cell coordinates of a non-empty list.
+struct CellBox {
+  Cell min;
+  Cell max;
+};
+CellBox bounding_box(const std::vector<Cell>& cells) {
+  CellBox box{cells.front(), cells.front()};
+  for (const Cell c : cells) {
+    box.min = {std::min(box.min.x, c.x), std::min(box.min.y, c.y)};
+    box.max = {std::max(box.max.x, c.x), std::max(box.max.y, c.y)};
+  }
+  return box;
 }
 
 }  // namespace
@@ -76,17 +92,37 @@ ScanMatch match_real_time(const ProbabilityGrid& grid, const Pose2& T_grid_robot
   const auto outside = static_cast<float>(kMinProbability);
   const double inv_n = 1.0 / static_cast<double>(points_robot.size());
   std::vector<Cell> cells;
+  std::vector<std::size_t> indices;
   for (const double a : angles) {
     discretize(g, T_grid_robot_prior, a, points_robot, cells);
+    // When the whole window stays on the grid (nearly always), the points are summed by index
+    // without a bounds test; the sums, and so the result, are the same either way.
+    const CellBox box = bounding_box(cells);
+    const bool inside = box.min.x - n_lin >= 0 && box.max.x + n_lin < w && box.min.y - n_lin >= 0 &&
+                        box.max.y + n_lin < h;
+    if (inside) {
+      indices.clear();
+      for (const Cell c : cells) {
+        indices.push_back(static_cast<std::size_t>(c.y) * static_cast<std::size_t>(w) +
+                          static_cast<std::size_t>(c.x));
+      }
+    }
     for (int dx = -n_lin; dx <= n_lin; ++dx) {
       for (int dy = -n_lin; dy <= n_lin; ++dy) {
         float sum = 0.0f;
-        for (const Cell c : cells) {
-          const int x = c.x + dx, y = c.y + dy;
-          sum += (x >= 0 && x < w && y >= 0 && y < h)
-                     ? table[values[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
-                                    static_cast<std::size_t>(x)]]
-                     : outside;
+        if (inside) {
+          const std::ptrdiff_t shift = static_cast<std::ptrdiff_t>(dy) * w + dx;
+          for (const std::size_t i : indices) {
+            sum += table[values[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + shift)]];
+          }
+        } else {
+          for (const Cell c : cells) {
+            const int x = c.x + dx, y = c.y + dy;
+            sum += (x >= 0 && x < w && y >= 0 && y < h)
+                       ? table[values[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+                                      static_cast<std::size_t>(x)]]
+                       : outside;
+          }
         }
         const double penalty = options.translation_delta_cost_weight * res * std::hypot(dx, dy) +
                                options.rotation_delta_cost_weight * std::abs(a);
@@ -112,6 +148,18 @@ std::uint8_t quantize_probability(double p) {
       255.0 * std::clamp((p - kMinProbability) / (kMaxProbability - kMinProbability), 0.0, 1.0)));
 }
 
+/// quantize_probability(value_to_probability(v)) for every cell value v.
+const std::vector<std::uint8_t>& quantized_value_table() {
+  static const std::vector<std::uint8_t> table = [] {
+    std::vector<std::uint8_t> t(std::size_t{kMaxCellValue} + 1);
+    for (std::size_t v = 0; v < t.size(); ++v) {
+      t[v] = quantize_probability(value_to_probability(static_cast<std::uint16_t>(v)));
+    }
+    return t;
+  }();
+  return table;
+}
+
 double score_of(long sum, std::size_t points) {
   return kMinProbability + (kMaxProbability - kMinProbability) * static_cast<double>(sum) /
                                (255.0 * static_cast<double>(points));
@@ -130,10 +178,11 @@ BranchAndBoundMatcher::BranchAndBoundMatcher(const ProbabilityGrid& grid, int de
   base.offset = 0;
   base.cells.resize(geometry_.size());
   const std::uint8_t unknown = quantize_probability(unknown_probability);
+  const std::vector<std::uint8_t>& quantized = quantized_value_table();
   for (std::size_t i = 0; i < base.cells.size(); ++i) {
     const std::uint16_t value = grid.values()[i];
-    base.cells[i] =
-        value == kUnknownCellValue ? unknown : quantize_probability(value_to_probability(value));
+    // (The mask is value_to_probability's: a cell marked during an update reads as its value.)
+    base.cells[i] = value == kUnknownCellValue ? unknown : quantized[value & kMaxCellValue];
   }
   levels_.push_back(std::move(base));
   for (int d = 1; d < depth; ++d) {
@@ -143,24 +192,30 @@ BranchAndBoundMatcher::BranchAndBoundMatcher(const ProbabilityGrid& grid, int de
     level.offset = (1 << d) - 1;
     level.width = w + level.offset;
     level.height = h + level.offset;
-    level.cells.assign(
-        static_cast<std::size_t>(level.width) * static_cast<std::size_t>(level.height), 0);
-    // Level d at (x, y) covers [x, x + 2^d): the four level d-1 cells at offsets 0 and half.
-    const auto at = [&finer](int x, int y) -> std::uint8_t {
-      const int fx = x + finer.offset, fy = y + finer.offset;
-      if (fx < 0 || fy < 0 || fx >= finer.width || fy >= finer.height) return 0;
-      return finer.cells[static_cast<std::size_t>(fy) * static_cast<std::size_t>(finer.width) +
-                         static_cast<std::size_t>(fx)];
+    // Level d at (x, y) covers [x, x + 2^d): the four level d-1 cells at offsets 0 and half. In
+    // the levels' own (padded) coordinates those are the finer cells (xx - half, yy - half) to
+    // (xx, yy); cells off the finer level count 0. The maximum is taken along each finer row into
+    // level row fy + half, then, in place, along the columns: row yy becomes the maximum of rows
+    // yy and yy + half (the latter not yet overwritten). No scratch grid: the levels are large
+    // and fresh memory is what costs.
+    const int fw = finer.width, fh = finer.height, lw = level.width, lh = level.height;
+    level.cells.resize(static_cast<std::size_t>(lw) * static_cast<std::size_t>(lh));
+    const auto row = [&level, lw](int yy) {
+      return level.cells.data() + static_cast<std::size_t>(yy) * static_cast<std::size_t>(lw);
     };
-    for (int yy = 0; yy < level.height; ++yy) {
-      const int y = yy - level.offset;
-      for (int xx = 0; xx < level.width; ++xx) {
-        const int x = xx - level.offset;
-        level.cells[static_cast<std::size_t>(yy) * static_cast<std::size_t>(level.width) +
-                    static_cast<std::size_t>(xx)] =
-            std::max(std::max(at(x, y), at(x + half, y)),
-                     std::max(at(x, y + half), at(x + half, y + half)));
-      }
+    for (int fy = 0; fy < fh; ++fy) {
+      const std::uint8_t* f =
+          finer.cells.data() + static_cast<std::size_t>(fy) * static_cast<std::size_t>(fw);
+      std::uint8_t* r = row(fy + half);
+      for (int xx = 0; xx < std::min(half, fw); ++xx) r[xx] = f[xx];
+      for (int xx = half; xx < fw; ++xx) r[xx] = std::max(f[xx - half], f[xx]);
+      for (int xx = std::max(half, fw); xx < lw; ++xx) r[xx] = f[xx - half];
+    }
+    for (int yy = 0; yy < lh; ++yy) {
+      if (yy + half >= lh) break;  // rows from here on keep their own value (row yy + half is 0)
+      std::uint8_t* out = row(yy);
+      const std::uint8_t* next = row(yy + half);
+      for (int xx = 0; xx < lw; ++xx) out[xx] = std::max(out[xx], next[xx]);
     }
     levels_.push_back(std::move(level));
   }
@@ -186,6 +241,7 @@ struct BranchAndBoundMatcher::Search {
   std::optional<ExcludedPoses> excluded;
   std::vector<double> angles;
   std::vector<std::vector<Cell>> scans;
+  std::vector<CellBox> boxes;  // per angle, of scans
   int n_lin = 0;
   int zero_angle = 0;  // index of the smallest |angle|
 
@@ -196,8 +252,10 @@ struct BranchAndBoundMatcher::Search {
     angles = angle_offsets(window.angular_rad, angular_search_step_rad(res, max_range_of(points)));
     n_lin = static_cast<int>(std::ceil(window.linear_m / res - 1e-9));
     scans.resize(angles.size());
+    boxes.resize(angles.size());
     for (std::size_t a = 0; a < angles.size(); ++a) {
       discretize(m.geometry_, prior, angles[a], points, scans[a]);
+      boxes[a] = bounding_box(scans[a]);
       if (std::abs(angles[a]) < std::abs(angles[static_cast<std::size_t>(zero_angle)])) {
         zero_angle = static_cast<int>(a);
       }
@@ -208,7 +266,19 @@ struct BranchAndBoundMatcher::Search {
     const Level& level = matcher.levels_[static_cast<std::size_t>(level_index)];
     long sum = 0;
     const int ox = c.x + level.offset, oy = c.y + level.offset;
-    for (const Cell cell : scans[static_cast<std::size_t>(c.angle)]) {
+    const std::vector<Cell>& scan = scans[static_cast<std::size_t>(c.angle)];
+    const CellBox& box = boxes[static_cast<std::size_t>(c.angle)];
+    if (box.min.x + ox >= 0 && box.min.y + oy >= 0 && box.max.x + ox < level.width &&
+        box.max.y + oy < level.height) {
+      // Every point on the level: no bounds test (the same sum).
+      for (const Cell cell : scan) {
+        sum += level.cells[static_cast<std::size_t>(cell.y + oy) *
+                               static_cast<std::size_t>(level.width) +
+                           static_cast<std::size_t>(cell.x + ox)];
+      }
+      return sum;
+    }
+    for (const Cell cell : scan) {
       const int x = cell.x + ox, y = cell.y + oy;
       if (x < 0 || y < 0 || x >= level.width || y >= level.height) continue;
       sum += level.cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) +
@@ -229,14 +299,15 @@ struct BranchAndBoundMatcher::Search {
     });
   }
 
-  static void sort(std::vector<Candidate>& candidates) {
+  static void sort(std::span<Candidate> candidates) {
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const Candidate& a, const Candidate& b) { return a.sum > b.sum; });
   }
 
   /// Hess et al. 2016, Algorithm 3 (depth-first, best child first): the best candidate below
-  /// `candidates` whose sum exceeds `bound`, or nullopt.
-  std::optional<Candidate> branch(int level, std::vector<Candidate>& candidates, long bound) const {
+  /// `candidates` (sorted, best first) whose sum exceeds `bound`, or nullopt.
+  std::optional<Candidate> branch(int level, std::span<const Candidate> candidates,
+                                  long bound) const {
     std::optional<Candidate> best;
     for (const Candidate& c : candidates) {
       if (c.sum <= bound) break;  // sorted: no later candidate can do better
@@ -245,19 +316,23 @@ struct BranchAndBoundMatcher::Search {
         return c;
       }
       const int half = 1 << (level - 1);
-      std::vector<Candidate> children;
-      children.reserve(4);
+      // At most four children, sorted best first by insertion (stable: ties keep their order),
+      // on the stack: the search visits many nodes and must not allocate for each.
+      std::array<Candidate, 4> children;
+      std::size_t n = 0;
       for (const int dx : {0, half}) {
         if (c.x + dx > n_lin) break;
         for (const int dy : {0, half}) {
           if (c.y + dy > n_lin) break;
           Candidate child{c.angle, c.x + dx, c.y + dy, 0};
           child.sum = score(level - 1, child);
-          children.push_back(child);
+          std::size_t i = n++;
+          for (; i > 0 && children[i - 1].sum < child.sum; --i) children[i] = children[i - 1];
+          children[i] = child;
         }
       }
-      sort(children);
-      if (std::optional<Candidate> r = branch(level - 1, children, bound)) {
+      if (std::optional<Candidate> r =
+              branch(level - 1, std::span<const Candidate>(children.data(), n), bound)) {
         best = r;
         bound = r->sum;
       }

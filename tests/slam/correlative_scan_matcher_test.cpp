@@ -76,6 +76,72 @@ TEST(BranchAndBoundMatcher, ReturnsTheSameBestAsExhaustiveSearch) {
   }
 }
 
+/// Priors 0.5 m inside each edge of the grid, which put part of the scan off it and part on it.
+std::vector<Pose2> priors_over_the_edge(const Scene& s) {
+  const GridGeometry& g = s.grid.geometry();
+  const Vec2 lo = g.origin() + Vec2{0.5, 0.5};
+  const Vec2 hi =
+      g.origin() + Vec2{g.width() * g.resolution_m() - 0.5, g.height() * g.resolution_m() - 0.5};
+  std::vector<Pose2> out;
+  for (const Vec2 at : {Vec2{lo.x, s.truth.y}, Vec2{hi.x, s.truth.y}, Vec2{s.truth.x, lo.y},
+                        Vec2{s.truth.x, hi.y}}) {
+    const Pose2 prior{at.x, at.y, s.truth.theta};
+    int off = 0;
+    for (const Vec2& p : s.points) off += g.cell_at(prior * p).has_value() ? 0 : 1;
+    EXPECT_GT(off, 0) << "prior " << at.x << ", " << at.y;
+    EXPECT_LT(off, static_cast<int>(s.points.size()));
+    out.push_back(prior);
+  }
+  return out;
+}
+
+/// The scene's grid grown by 6 m of unknown cells on every side: no prior of
+/// priors_over_the_edge puts a point off it.
+ProbabilityGrid grown(const Scene& s) {
+  ProbabilityGrid out = s.grid;
+  const GridGeometry& g = s.grid.geometry();
+  out.grow_to_include(g.origin() - Vec2{6.0, 6.0});
+  out.grow_to_include(
+      g.origin() + Vec2{g.width() * g.resolution_m() + 6.0, g.height() * g.resolution_m() + 6.0});
+  return out;
+}
+
+// Points off the grid score as free, like unknown cells: the matcher's sums over a scan that
+// reaches past the grid's edge (checked point by point) equal its sums on a grid grown to hold
+// the whole window (taken without checks).
+TEST(MatchRealTime, ScoresPointsOffTheGridAsUnknownCells) {
+  const Scene s;
+  const ProbabilityGrid big = grown(s);
+  for (const Pose2& prior : priors_over_the_edge(s)) {
+    const ScanMatch edge = match_real_time(s.grid, prior, s.points, RealTimeMatcherOptions{});
+    const ScanMatch inside = match_real_time(big, prior, s.points, RealTimeMatcherOptions{});
+    EXPECT_DOUBLE_EQ(edge.score, inside.score);
+    EXPECT_DOUBLE_EQ(edge.T_grid_robot.x, inside.T_grid_robot.x);
+    EXPECT_DOUBLE_EQ(edge.T_grid_robot.y, inside.T_grid_robot.y);
+    EXPECT_DOUBLE_EQ(edge.T_grid_robot.theta, inside.T_grid_robot.theta);
+  }
+}
+
+// The same for branch and bound, whose coarse levels reach past the grid: over the edge it still
+// returns exhaustive search's best, and the same best as on the grown grid.
+TEST(BranchAndBoundMatcher, ReturnsTheExhaustiveBestOverTheGridsEdge) {
+  const Scene s;
+  const ProbabilityGrid big = grown(s);
+  const BranchAndBoundMatcher matcher(s.grid, 5);
+  const BranchAndBoundMatcher big_matcher(big, 5);
+  const SearchWindow window{0.4, 0.12};
+  for (const Pose2& prior : priors_over_the_edge(s)) {
+    const std::optional<ScanMatch> fast = matcher.match(prior, s.points, window, kMinProbability);
+    const std::optional<ScanMatch> slow =
+        matcher.match_exhaustive(prior, s.points, window, kMinProbability);
+    const std::optional<ScanMatch> on_big =
+        big_matcher.match(prior, s.points, window, kMinProbability);
+    ASSERT_TRUE(fast && slow && on_big);
+    EXPECT_DOUBLE_EQ(fast->score, slow->score);
+    EXPECT_DOUBLE_EQ(fast->score, on_big->score);
+  }
+}
+
 // A wide window and a full turn: found from a prior 0.8 m and 2.5 rad off.
 TEST(BranchAndBoundMatcher, FindsThePoseInAFullTurn) {
   const Scene s;

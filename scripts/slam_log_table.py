@@ -70,13 +70,19 @@ SIM_WORLDS = {
 SIM_BAR_M = 0.15
 
 
-def simulated_log(name, out_root, generator):
-    """The simulated corrected log of a floor plan, made once into out_root."""
+def simulated_log(name, out_root, generator, range_m=None):
+    """The simulated corrected log of a floor plan, made once into out_root (made again when the
+    generator's arguments differ from those it was made with, kept beside it)."""
     dst = out_root / f"{name}.log"
-    if not dst.exists():
-        world, cell_m, _ = SIM_WORLDS[name]
-        subprocess.run([generator, "--world", str(DATA / world), "--map-resolution-m", str(cell_m),
-                        "--out", str(dst)], check=True, capture_output=True)
+    world, cell_m, _ = SIM_WORLDS[name]
+    cmd = [generator, "--world", str(DATA / world), "--map-resolution-m", str(cell_m)]
+    if range_m is not None:
+        cmd += ["--range-m", str(range_m)]
+    made_with = dst.with_suffix(".args")
+    wanted = " ".join(cmd[1:])
+    if not dst.exists() or not made_with.exists() or made_with.read_text() != wanted:
+        subprocess.run(cmd + ["--out", str(dst)], check=True, capture_output=True)
+        made_with.write_text(wanted)
     return dst
 
 
@@ -216,6 +222,9 @@ def main():
                     default=str(ROOT / "build/dev/bench/slam/simulated_corrected_log"),
                     help="--sim: the program that writes a simulated corrected log")
     ap.add_argument("--gmapping", help="--sim: folder with GMapping's gfs_nogui and gfs2log")
+    ap.add_argument("--range-m", type=float,
+                    help="--sim: the simulated laser's maximum range (default: the generator's, "
+                         "50 m; 5.6 for a Hokuyo URG-class sensor)")
     args = ap.parse_args()
     sim = args.sim is not None
     names = (args.sim or list(SIM_WORLDS)) if sim else args.logs
@@ -229,7 +238,7 @@ def main():
     out_root.mkdir(parents=True, exist_ok=True)
     for name in names:
         if sim:
-            simulated_log(name, out_root, args.generator)
+            simulated_log(name, out_root, args.generator, args.range_m)
         else:
             plain_log(name, out_root)
 
@@ -257,6 +266,8 @@ def main():
             if "error" not in r and r["seed"] == args.seeds[0]:
                 prefix = "slam-sim" if sim else "slam-log"
                 shutil.copy(r["case"] / "slam" / "map.png", dst / f"{prefix}-{r['name']}-d{r['drift']}.png")
+    if sim and args.range_m is not None:
+        print(f"\nSimulated laser range: {args.range_m:g} m.")
     print(f"\n{len(results)} runs in {total_s:.0f} s ({args.jobs} at a time); "
           f"{failures} failed, worse than odometry{' or over the bar' if args.check_bar else ''}")
     return 1 if failures else 0

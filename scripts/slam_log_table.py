@@ -17,7 +17,7 @@ drift, as a peer column.
 usage: scripts/slam_log_table.py [--tessera build/dev/apps/tessera/tessera] [--seeds 1 2 3]
                                  [--drifts 0.15 0.3] [--logs fr079 aces fhw intel] [--jobs 2]
                                  [--out out/slam-logs] [--images DIR]
-       scripts/slam_log_table.py --sim [hospital waples cave office] [--gmapping DIR] ...
+       scripts/slam_log_table.py --sim [hospital waples cave office] [--gmapping DIR] [--range-m R] ...
 """
 import argparse
 import concurrent.futures
@@ -227,6 +227,8 @@ def main():
                          "50 m; 5.6 for a Hokuyo URG-class sensor)")
     args = ap.parse_args()
     sim = args.sim is not None
+    if args.range_m is not None and (not sim or not args.range_m > 0):
+        ap.error("--range-m needs --sim and a range > 0")
     names = (args.sim or list(SIM_WORLDS)) if sim else args.logs
     sources = [SIM_WORLDS[n][0] for n in names] if sim else [LOGS[n][0] for n in names]
     missing = [str(DATA / rel) for rel in sources if not (DATA / rel).exists()]

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <span>
 
+#include "tessera/grid/grid_geometry.hpp"
+
 namespace tessera::slam {
 namespace {
 
@@ -42,11 +44,7 @@ void discretize(const GridGeometry& g, const Pose2& prior, double angle_offset_r
   }
 }
 
-/// The smallest and largest cell coordinates of a non-empty list.
-struct CellBox {
-  Cell min;
-  Cell max;
-};
+/// The smallest box (grid_geometry.hpp's CellBox) that holds a non-empty list of cells.
 CellBox bounding_box(const std::vector<Cell>& cells) {
   CellBox box{cells.front(), cells.front()};
   for (const Cell c : cells) {

@@ -121,6 +121,20 @@ const std::map<std::string, Setter>& setters() {
       {"wrong_share", [](auto& o, double v) { o.wrong_closure_share = v; }},
       {"wrong_seed",
        [](auto& o, double v) { o.wrong_closure_seed = static_cast<std::uint64_t>(v); }},
+      {"refiner.unknown", [](auto& o, double v) { o.refiner.unknown_probability = v; }},
+      {"loop.refiner.unknown",
+       [](auto& o, double v) { o.loop_closer.refiner.unknown_probability = v; }},
+      {"final.unknown", [](auto& o, double v) { o.final_map_refiner.unknown_probability = v; }},
+      {"calibrate", [](auto& o, double v) { o.odometry_calibration.enabled = v != 0.0; }},
+      {"calibrate.min_travel_m",
+       [](auto& o, double v) { o.odometry_calibration.min_travel_m = v; }},
+      {"calibrate.min_turn_rad",
+       [](auto& o, double v) { o.odometry_calibration.min_turn_rad = v; }},
+      {"calibrate.segment_m", [](auto& o, double v) { o.odometry_calibration.segment_m = v; }},
+      {"calibrate.segment_rad", [](auto& o, double v) { o.odometry_calibration.segment_rad = v; }},
+      {"calibrate.memory_m", [](auto& o, double v) { o.odometry_calibration.memory_m = v; }},
+      {"calibrate.max_error",
+       [](auto& o, double v) { o.odometry_calibration.max_scale_error = v; }},
       {"huber_scale", [](auto& o, double v) { o.huber_scale = v; }},
       {"final.passes", [](auto& o, double v) { o.final_map_passes = static_cast<int>(v); }},
       {"final.hessian", [](auto& o, double v) { o.final_map_hessian_scale = v; }},
@@ -317,6 +331,8 @@ int run(int argc, char** argv) {
       st.optimizations, result->graph.edges.size(), st.max_loop_correction_m,
       st.max_loop_correction_rad, st.loop_candidates, st.loop_unverified, st.loop_rejected,
       st.loop_wrong_injected);
+  std::printf("odometry scales: translation %.4f rotation %.4f\n", st.odometry_translation_scale,
+              st.odometry_rotation_scale);
   {
     // Loop constraints the final graph disagrees with: outliers the robust loss had to absorb.
     int robust = 0, off_10cm = 0, off_50cm = 0;

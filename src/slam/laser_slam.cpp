@@ -85,6 +85,7 @@ std::optional<std::string> validate(const LaserSlamOptions& o) {
   if (auto p = validate(o.real_time)) return "real_time." + *p;
   if (auto p = validate(o.real_time_without_odometry)) return "real_time_without_odometry." + *p;
   if (auto p = validate(o.refiner)) return "refiner." + *p;
+  if (auto p = validate(o.odometry_calibration)) return "odometry_calibration." + *p;
   if (auto p = validate(o.loop_closer)) return "loop_closer." + *p;
   if (!(o.loop_min_overlap >= 0.0 && o.loop_min_overlap <= 1.0)) {
     return "loop_min_overlap must be in [0, 1]";
@@ -172,7 +173,8 @@ struct LaserSlam::Impl {
         filter(o.motion_filter),
         closer(o.loop_closer),
         loop_information(information_of(o.loop_sigmas)),
-        wrong_closures(o.wrong_closure_seed) {}
+        wrong_closures(o.wrong_closure_seed),
+        calibration(o.odometry_calibration) {}
 
   LaserSlamOptions options;
   ActiveSubmaps submaps;
@@ -190,6 +192,7 @@ struct LaserSlam::Impl {
   std::vector<ScanRecord> scans;
   Pose2 last_odometry;
   Pose2 last_T_local;
+  OdometryCalibration calibration;
   double last_t_s = 0.0;
   /// The last scan's step from the one before it (use_odometry off).
   Pose2 last_step;
@@ -487,10 +490,16 @@ struct LaserSlam::Impl {
       has_pending_start = false;
     } else if (scan_index > 0) {
       if (scan.t_s < last_t_s) ++stats.backward_stamps;
-      T_local = options.use_odometry ? last_T_local * between(last_odometry, scan.odometry)
-                                     : last_T_local * last_step;
+      T_local = options.use_odometry
+                    ? last_T_local * calibration.corrected(between(last_odometry, scan.odometry))
+                    : last_T_local * last_step;
     }
     T_local = matched_in_submap(T_local, matching, wall);
+    if (starts_trajectory) {
+      calibration.break_segment();
+    } else if (options.use_odometry && scan_index > 0) {
+      calibration.observe(between(last_odometry, scan.odometry), between(last_T_local, T_local));
+    }
     if (wall && !axis_local_rad) axis_local_rad = T_local.theta + wall->angle_rad;
     last_odometry = scan.odometry;
     last_step = starts_trajectory || scan_index == 0 ? Pose2{} : between(last_T_local, T_local);
@@ -803,6 +812,8 @@ struct LaserSlam::Impl {
     out.stats.scans = static_cast<int>(scans.size());
     out.stats.nodes = static_cast<int>(nodes.size());
     out.stats.submaps = submaps.size();
+    out.stats.odometry_translation_scale = calibration.translation_scale();
+    out.stats.odometry_rotation_scale = calibration.rotation_scale();
     return out;
   }
 };

@@ -13,19 +13,22 @@ namespace {
 class GridAdapter {
  public:
   enum { DATA_DIMENSION = 1 };
-  explicit GridAdapter(const ProbabilityGrid& grid)
+  GridAdapter(const ProbabilityGrid& grid, double unknown_probability)
       : values_(grid.values().data()),
         table_(value_to_probability_table().data()),
         width_(grid.geometry().width()),
-        height_(grid.geometry().height()) {}
+        height_(grid.geometry().height()),
+        unknown_probability_(unknown_probability) {}
 
   void GetValue(int row, int column, double* f) const {
     if (row < 0 || column < 0 || row >= height_ || column >= width_) {
-      *f = kMinProbability;
+      *f = unknown_probability_;
       return;
     }
-    *f = table_[values_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
-                        static_cast<std::size_t>(column)]];
+    const std::uint16_t value =
+        values_[static_cast<std::size_t>(row) * static_cast<std::size_t>(width_) +
+                static_cast<std::size_t>(column)];
+    *f = value == kUnknownCellValue ? unknown_probability_ : table_[value];
   }
 
  private:
@@ -33,6 +36,7 @@ class GridAdapter {
   const float* table_;
   int width_;
   int height_;
+  double unknown_probability_;
 };
 
 struct Evaluation {
@@ -47,7 +51,7 @@ class Problem {
  public:
   Problem(const ProbabilityGrid& grid, const Pose2& prior, const std::vector<Vec2>& points,
           const ScanRefinerOptions& options, const std::optional<HeadingTarget>& heading)
-      : adapter_(grid),
+      : adapter_(grid, options.unknown_probability),
         interpolator_(adapter_),
         origin_(grid.geometry().origin()),
         inv_res_(1.0 / grid.geometry().resolution_m()),
@@ -122,6 +126,9 @@ std::optional<std::string> validate(const ScanRefinerOptions& o) {
   if (!(o.translation_weight >= 0.0)) return "translation_weight must be >= 0";
   if (!(o.rotation_weight >= 0.0)) return "rotation_weight must be >= 0";
   if (o.max_iterations < 0) return "max_iterations must be >= 0";
+  if (!(o.unknown_probability >= kMinProbability && o.unknown_probability <= kMaxProbability)) {
+    return "unknown_probability must be in [0.1, 0.9]";
+  }
   return std::nullopt;
 }
 

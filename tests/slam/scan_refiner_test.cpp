@@ -84,11 +84,40 @@ TEST(RefineScan, AHeadingTargetPullsTheHeadingByItsWeight) {
   EXPECT_NEAR(strong.T_grid_robot.theta, target, 0.002);
 }
 
+// A wall seen from one side only, as every wall of a submap is: free cells (0.3) before it, its
+// own cells (0.7), unknown cells behind it. Read as kMinProbability, the unknown cells tilt the
+// interpolated ridge towards the free side, and a scan of the wall is matched short of it (the
+// bias that shortened local SLAM's steps, decision 0039); read at the free cells' level, the
+// ridge is symmetric and the scan stays on the wall.
+TEST(RefineScan, UnknownCellsAtTheFreeLevelLeaveAWallSeenFromOneSideWhereItIs) {
+  ProbabilityGrid grid(GridGeometry({0.0, 0.0}, 0.05, 40, 40));
+  for (int y = 0; y < 40; ++y) {
+    for (int x = 0; x < 20; ++x) grid.set_probability({x, y}, 0.3);
+    grid.set_probability({20, y}, 0.7);
+  }
+  const double wall_x = 20.5 * 0.05;  // the wall cells' centres
+  std::vector<Vec2> points;
+  for (int i = -10; i <= 10; ++i) points.push_back({wall_x - 0.5, 0.02 * i});
+  const Pose2 truth{0.5, 1.0, 0.0};
+  ScanRefinerOptions cartographer{1.0, 0.0, 0.0, 20};
+  ScanRefinerOptions free_level = cartographer;
+  free_level.unknown_probability = 0.3;
+  const RefinedPose pulled = refine_scan(grid, truth, truth, points, cartographer);
+  const RefinedPose kept = refine_scan(grid, truth, truth, points, free_level);
+  EXPECT_LT(pulled.T_grid_robot.x, truth.x - 0.002);  // towards the side the wall was seen from
+  EXPECT_NEAR(kept.T_grid_robot.x, truth.x, 2e-4);
+  EXPECT_NEAR(kept.T_grid_robot.theta, truth.theta, 1e-4);
+}
+
 TEST(ScanRefinerOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
   EXPECT_FALSE(validate(ScanRefinerOptions{}).has_value());
+  EXPECT_EQ(ScanRefinerOptions{}.unknown_probability, kMinProbability);
   ScanRefinerOptions o;
   o.occupied_space_weight = 0.0;
   EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("occupied_space_weight"));
+  o = ScanRefinerOptions{};
+  o.unknown_probability = 0.05;
+  EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("unknown_probability"));
 }
 
 }  // namespace

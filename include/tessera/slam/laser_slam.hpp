@@ -23,6 +23,7 @@
 #include "tessera/slam/correlative_scan_matcher.hpp"
 #include "tessera/slam/loop_closer.hpp"
 #include "tessera/slam/motion_filter.hpp"
+#include "tessera/slam/odometry_calibration.hpp"
 #include "tessera/slam/scan_points.hpp"
 #include "tessera/slam/scan_refiner.hpp"
 #include "tessera/slam/submap.hpp"
@@ -45,6 +46,13 @@ struct SlamProgress {
   int submaps = 0;
   int loop_closures = 0;
 };
+
+/// What an unknown cell reads in laser SLAM's refinements
+/// (ScanRefinerOptions::unknown_probability): about what a free cell of a submap reads after the
+/// twenty or so misses it gets there (0.49 per miss), so that the edge of the known part of a
+/// submap neither pulls a scan's returns in nor pushes them out. Cartographer's kMinProbability
+/// shortened local SLAM's steps by 0.1 % in simulation with exact odometry (decision 0039).
+inline constexpr double kSlamUnknownProbability = 0.3;
 
 struct LaserSlamOptions {
   /// Returns beyond 20 m only clear free space. Decision 0009 had 8 m (a heading error of 0.2 deg
@@ -90,10 +98,17 @@ struct LaserSlamOptions {
   /// then close only by bending the corridors: Intel corrected 0.17-0.21 m ATE at 10/m, 0.07-0.09
   /// m at 3/m. The Intel raw relations improve too (0.0173 m at 5/m, 0.0189 m at 10/m, 0.0168 m at
   /// 3/m, with the rest of decision 0013).
-  ScanRefinerOptions refiner{1.0, 3.0, 5.0, 20};
+  /// Unknown cells read kSlamUnknownProbability (decision 0039).
+  ScanRefinerOptions refiner{1.0, 3.0, 5.0, 20, kSlamUnknownProbability};
+  /// The odometry's translation and rotation scales, estimated from local SLAM's matches and
+  /// applied to its steps before they predict the next scan (odometry_calibration.hpp): the
+  /// refinement's tie to the prediction (3/m) otherwise carries a scale error into every step
+  /// along a corridor. With kSlamUnknownProbability, local SLAM then follows the true scale
+  /// whatever the odometry's (decision 0039).
+  OdometryCalibrationOptions odometry_calibration;
 
   bool loop_closure = true;
-  LoopCloserOptions loop_closer;
+  LoopCloserOptions loop_closer{.refiner{1.0, 1.0, 1.0, 20, kSlamUnknownProbability}};
   /// A (node, finished submap) pair is searched only when at least this share of the node's loop
   /// points, placed at the current estimate, fall on cells the submap knows.
   double loop_min_overlap = 0.5;
@@ -192,7 +207,8 @@ struct LaserSlamOptions {
   ScanRefinerOptions final_map_refiner{.occupied_space_weight = 1.0,
                                        .translation_weight = 0.1,
                                        .rotation_weight = 0.4,
-                                       .max_iterations = 5};
+                                       .max_iterations = 5,
+                                       .unknown_probability = kSlamUnknownProbability};
 
   /// The final map: every node's scan at its optimised pose.
   double map_resolution_m = 0.05;
@@ -227,6 +243,9 @@ struct LaserSlamStats {
   double max_loop_correction_m = 0.0;
   double max_loop_correction_rad = 0.0;
   int backward_stamps = 0;  // scans stamped earlier than the scan before them
+  /// The odometry's scales as estimated at the end (1: not estimated, or no error found).
+  double odometry_translation_scale = 1.0;
+  double odometry_rotation_scale = 1.0;
   double matching_s = 0.0;  // local SLAM: matching and submap insertion
   double loop_search_s = 0.0;
   double optimization_s = 0.0;

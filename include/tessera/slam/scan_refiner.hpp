@@ -18,12 +18,20 @@ namespace tessera::slam {
 
 /// Cost = sum_i (w_occ / sqrt(n) * (1 - P(T p_i)))^2 + (w_t * |t - t_prior|)^2
 ///        + (w_r * (theta - theta_prior))^2, P the bicubic interpolation of the cell probabilities
-/// (unknown and outside cells at kMinProbability). The weights are Cartographer's 2D defaults.
+/// (unknown and outside cells at unknown_probability). The weights are Cartographer's 2D defaults.
 struct ScanRefinerOptions {
   double occupied_space_weight = 1.0;
   double translation_weight = 10.0;  // per metre
   double rotation_weight = 40.0;     // per radian
   int max_iterations = 20;
+  /// What an unknown cell (and a cell outside the grid) reads. kMinProbability is Cartographer's
+  /// choice: an unexplored cell costs as much as the emptiest one. Where a scan reaches beyond the
+  /// known part of the grid (a robot driving on sees new walls ahead), that pulls its returns back
+  /// into known free cells, whose probability is higher: matching against a map built from the
+  /// scans behind the robot then shortens every step (measured in simulation with exact odometry:
+  /// -0.1 % of the path, decision 0039). Even odds (0.5) leave the points there no better and no
+  /// worse off than before the robot knew the cell.
+  double unknown_probability = kMinProbability;
 };
 
 /// Empty when usable; otherwise names the field and the rule it breaks.

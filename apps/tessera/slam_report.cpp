@@ -88,6 +88,7 @@ nlohmann::json slam_stats_json(const slam::LaserSlamResult& r, const LaserLog& l
           {"backward_stamps", log.backward_stamps},
           {"odometry_translation_scale", st.odometry_translation_scale},
           {"odometry_rotation_scale", st.odometry_rotation_scale},
+          {"odometry_drift_rad_per_m", st.odometry_drift_rad_per_m},
           {"matching_s", st.matching_s},
           {"loop_search_s", st.loop_search_s},
           {"optimization_s", st.optimization_s},

@@ -331,8 +331,9 @@ int run(int argc, char** argv) {
       st.optimizations, result->graph.edges.size(), st.max_loop_correction_m,
       st.max_loop_correction_rad, st.loop_candidates, st.loop_unverified, st.loop_rejected,
       st.loop_wrong_injected);
-  std::printf("odometry scales: translation %.4f rotation %.4f\n", st.odometry_translation_scale,
-              st.odometry_rotation_scale);
+  std::printf("odometry scales: translation %.4f rotation %.4f drift %.5f rad/m\n",
+              st.odometry_translation_scale, st.odometry_rotation_scale,
+              st.odometry_drift_rad_per_m);
   {
     // Loop constraints the final graph disagrees with: outliers the robust loss had to absorb.
     int robust = 0, off_10cm = 0, off_50cm = 0;

@@ -814,6 +814,7 @@ struct LaserSlam::Impl {
     out.stats.submaps = submaps.size();
     out.stats.odometry_translation_scale = calibration.translation_scale();
     out.stats.odometry_rotation_scale = calibration.rotation_scale();
+    out.stats.odometry_drift_rad_per_m = calibration.drift_rad_per_m();
     return out;
   }
 };

@@ -20,13 +20,14 @@ Pose2 true_step(int i) {
   return {0.1, 0.0, sign * std::numbers::pi / 8.0};
 }
 
-/// What an odometry with these scales reports for a true step, with its noise: a Gaussian share
-/// of the step along and across it, and of the turn.
-Pose2 odometry_step(const Pose2& truth, double scale, double rotation_scale, double noise,
-                    Rng& rng) {
+/// What an odometry with these errors reports for a true step, with its noise: a Gaussian share
+/// of the step along and across it, and of the turn; drift_rad_per_m turns it with every metre.
+Pose2 odometry_step(const Pose2& truth, double scale, double rotation_scale, double noise, Rng& rng,
+                    double drift_rad_per_m = 0.0) {
   const double sigma_m = noise * std::hypot(truth.x, truth.y);
   return {scale * truth.x + rng.gaussian(sigma_m), scale * truth.y + rng.gaussian(sigma_m),
-          rotation_scale * truth.theta + rng.gaussian(noise * std::abs(truth.theta))};
+          rotation_scale * truth.theta + drift_rad_per_m * truth.x +
+              rng.gaussian(noise * std::abs(truth.theta))};
 }
 
 /// A match good to a centimetre and a tenth of a degree.
@@ -35,20 +36,24 @@ Pose2 matched_step(const Pose2& truth, Rng& rng) {
           truth.theta + rng.gaussian(0.002)};
 }
 
-// An odometry 5 % long that turns 3 % short, with 3 % noise per step: after 200 m both scales
-// are found to within half a percent, and the corrected steps predict the matched ones.
-TEST(OdometryCalibration, FindsTheTranslationAndRotationScales) {
+// An odometry 5 % long that turns 3 % short and drifts 0.01 rad (0.57 degrees) per metre, with
+// 3 % noise per step: after 200 m the scales are found to within half a percent and the drift to
+// within 15 % (1.5 mrad/m), and the corrected steps predict the matched ones.
+TEST(OdometryCalibration, FindsTheScalesAndTheDrift) {
   OdometryCalibration calibration{OdometryCalibrationOptions{}};
   Rng rng(4);
   for (int i = 0; i < 480; ++i) {
     const Pose2 truth = true_step(i);
-    calibration.observe(odometry_step(truth, 1.05, 0.97, 0.03, rng), matched_step(truth, rng));
+    calibration.observe(odometry_step(truth, 1.05, 0.97, 0.03, rng, 0.01),
+                        matched_step(truth, rng));
   }
   EXPECT_NEAR(calibration.translation_scale(), 1.0 / 1.05, 0.005);
   EXPECT_NEAR(calibration.rotation_scale(), 1.0 / 0.97, 0.005);
-  const Pose2 corrected = calibration.corrected({1.05, 0.0, 0.97 * 0.4});
+  // Per metre the odometry reports: it reports 1.05 m for every metre driven.
+  EXPECT_NEAR(calibration.drift_rad_per_m(), -0.01 / (0.97 * 1.05), 0.0015);
+  const Pose2 corrected = calibration.corrected({1.05, 0.0, 0.97 * 0.4 + 0.01});
   EXPECT_NEAR(corrected.x, 1.0, 0.005);
-  EXPECT_NEAR(corrected.theta, 0.4, 0.002);
+  EXPECT_NEAR(corrected.theta, 0.4, 0.003);
 }
 
 // Noise across the step (a reference's sideways jitter, a skid) lengthens every odometry step
@@ -77,6 +82,7 @@ TEST(OdometryCalibration, StaysAtOneUntilSeenAndStepsThatAgreeChangeNothing) {
   }
   EXPECT_EQ(calibration.translation_scale(), 1.0);  // 8 m: not yet
   EXPECT_EQ(calibration.rotation_scale(), 1.0);
+  EXPECT_EQ(calibration.drift_rad_per_m(), 0.0);
   for (int i = 16; i < 480; ++i) {
     const Pose2 truth = true_step(i);
     calibration.observe(odometry_step(truth, 1.08, 1.0, 0.0, rng), truth);
@@ -113,6 +119,7 @@ TEST(OdometryCalibration, IgnoresFailedMatchesAndHoldsItsLimits) {
   OdometryCalibration unused{off};
   for (int i = 0; i < 480; ++i) unused.observe({1.1 * 0.5, 0.0, 0.0}, {0.5, 0.0, 0.0});
   EXPECT_EQ(unused.translation_scale(), 1.0);
+  EXPECT_EQ(unused.drift_rad_per_m(), 0.0);
   const Pose2 step{0.3, 0.1, 0.2};
   EXPECT_EQ(unused.corrected(step).x, step.x);
   EXPECT_EQ(unused.corrected(step).theta, step.theta);

@@ -243,9 +243,11 @@ struct LaserSlamStats {
   double max_loop_correction_m = 0.0;
   double max_loop_correction_rad = 0.0;
   int backward_stamps = 0;  // scans stamped earlier than the scan before them
-  /// The odometry's scales as estimated at the end (1: not estimated, or no error found).
+  /// The odometry's errors as estimated at the end (odometry_calibration.hpp; 1, 1 and 0: not
+  /// estimated, or none found).
   double odometry_translation_scale = 1.0;
   double odometry_rotation_scale = 1.0;
+  double odometry_drift_rad_per_m = 0.0;
   double matching_s = 0.0;  // local SLAM: matching and submap insertion
   double loop_search_s = 0.0;
   double optimization_s = 0.0;

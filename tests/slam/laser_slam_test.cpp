@@ -164,7 +164,7 @@ TEST(LaserSlam, ManhattanOptionImprovesTheMapInABuildingOfRightAngles) {
 // radius set wrong). Local SLAM's refinement is tied to the odometry's prediction, so the stretch
 // leaks into every step the walls do not pin; calibrated from the matches, the prediction is
 // right and local SLAM's path follows the truth more closely (one scan a second, as sparse as a
-// corrected log: measured 0.058 -> 0.049 m; at five a second the scans pin every step and the
+// corrected log: measured 0.058 -> 0.050 m; at five a second the scans pin every step and the
 // prior hardly matters).
 TEST(LaserSlam, AnOdometryThatReadsLongIsCalibratedFromTheMatches) {
   OdometryErrorOptions odometry;

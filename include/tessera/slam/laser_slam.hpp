@@ -100,11 +100,11 @@ struct LaserSlamOptions {
   /// 3/m, with the rest of decision 0013).
   /// Unknown cells read kSlamUnknownProbability (decision 0039).
   ScanRefinerOptions refiner{1.0, 3.0, 5.0, 20, kSlamUnknownProbability};
-  /// The odometry's translation and rotation scales, estimated from local SLAM's matches and
-  /// applied to its steps before they predict the next scan (odometry_calibration.hpp): the
-  /// refinement's tie to the prediction (3/m) otherwise carries a scale error into every step
-  /// along a corridor. With kSlamUnknownProbability, local SLAM then follows the true scale
-  /// whatever the odometry's (decision 0039).
+  /// The odometry's translation and rotation scales and its drift per metre, estimated from local
+  /// SLAM's matches and taken out of its steps before they predict the next scan
+  /// (odometry_calibration.hpp): the refinement's tie to the prediction (3/m, 5/rad) otherwise
+  /// carries them into every step the walls do not pin. With kSlamUnknownProbability, local SLAM
+  /// then follows the true scale whatever the odometry's (decision 0039).
   OdometryCalibrationOptions odometry_calibration;
 
   bool loop_closure = true;

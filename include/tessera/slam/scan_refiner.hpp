@@ -25,12 +25,11 @@ struct ScanRefinerOptions {
   double rotation_weight = 40.0;     // per radian
   int max_iterations = 20;
   /// What an unknown cell (and a cell outside the grid) reads. kMinProbability is Cartographer's
-  /// choice: an unexplored cell costs as much as the emptiest one. Where a scan reaches beyond the
-  /// known part of the grid (a robot driving on sees new walls ahead), that pulls its returns back
-  /// into known free cells, whose probability is higher: matching against a map built from the
-  /// scans behind the robot then shortens every step (measured in simulation with exact odometry:
-  /// -0.1 % of the path, decision 0039). Even odds (0.5) leave the points there no better and no
-  /// worse off than before the robot knew the cell.
+  /// choice: an unexplored cell costs as much as the emptiest one. But a submap sees each wall from
+  /// one side, free cells before it and unknown ones behind: read as kMinProbability, those tilt
+  /// the wall's interpolated ridge towards the side it was seen from, and a scan is matched a
+  /// little short of it (local SLAM's path 0.1 % short in simulation with exact odometry, decision
+  /// 0039). Laser SLAM reads them at the free cells' level (kSlamUnknownProbability).
   double unknown_probability = kMinProbability;
 };
 

@@ -484,21 +484,22 @@ struct LaserSlam::Impl {
     // first scan of a new trajectory is where start_trajectory() put it, in the local frame as
     // the graph now places it.
     const bool starts_trajectory = has_pending_start;
+    // The odometry's step since the last scan (the robot frame of the last scan).
+    const Pose2 odometry_step = between(last_odometry, scan.odometry);
     Pose2 T_local = options.use_odometry ? scan.odometry : Pose2{};
     if (starts_trajectory) {
       T_local = local_to_global().inverse() * pending_start;
       has_pending_start = false;
     } else if (scan_index > 0) {
       if (scan.t_s < last_t_s) ++stats.backward_stamps;
-      T_local = options.use_odometry
-                    ? last_T_local * calibration.corrected(between(last_odometry, scan.odometry))
-                    : last_T_local * last_step;
+      T_local = options.use_odometry ? last_T_local * calibration.corrected(odometry_step)
+                                     : last_T_local * last_step;
     }
     T_local = matched_in_submap(T_local, matching, wall);
     if (starts_trajectory) {
       calibration.break_segment();
     } else if (options.use_odometry && scan_index > 0) {
-      calibration.observe(between(last_odometry, scan.odometry), between(last_T_local, T_local));
+      calibration.observe(odometry_step, between(last_T_local, T_local));
     }
     if (wall && !axis_local_rad) axis_local_rad = T_local.theta + wall->angle_rad;
     last_odometry = scan.odometry;

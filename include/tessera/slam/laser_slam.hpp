@@ -108,7 +108,12 @@ struct LaserSlamOptions {
   OdometryCalibrationOptions odometry_calibration;
 
   bool loop_closure = true;
-  LoopCloserOptions loop_closer{.refiner{1.0, 1.0, 1.0, 20, kSlamUnknownProbability}};
+  /// LoopCloserOptions' defaults, with unknown cells at kSlamUnknownProbability (decision 0039).
+  LoopCloserOptions loop_closer = [] {
+    LoopCloserOptions o;
+    o.refiner.unknown_probability = kSlamUnknownProbability;
+    return o;
+  }();
   /// A (node, finished submap) pair is searched only when at least this share of the node's loop
   /// points, placed at the current estimate, fall on cells the submap knows.
   double loop_min_overlap = 0.5;

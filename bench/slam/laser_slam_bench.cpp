@@ -135,6 +135,8 @@ const std::map<std::string, Setter>& setters() {
       {"calibrate.memory_m", [](auto& o, double v) { o.odometry_calibration.memory_m = v; }},
       {"calibrate.max_error",
        [](auto& o, double v) { o.odometry_calibration.max_scale_error = v; }},
+      {"calibrate.max_drift",
+       [](auto& o, double v) { o.odometry_calibration.max_drift_rad_per_m = v; }},
       {"huber_scale", [](auto& o, double v) { o.huber_scale = v; }},
       {"final.passes", [](auto& o, double v) { o.final_map_passes = static_cast<int>(v); }},
       {"final.hessian", [](auto& o, double v) { o.final_map_hessian_scale = v; }},

@@ -36,17 +36,24 @@ Pose2 matched_step(const Pose2& truth, Rng& rng) {
           truth.theta + rng.gaussian(0.002)};
 }
 
+/// The tour's first 480 steps (200 m) through `calibration`: an odometry with these errors
+/// (odometry_step) against matches good to a centimetre.
+void drive_tour(OdometryCalibration& calibration, double scale, double rotation_scale, double noise,
+                double drift_rad_per_m, Rng& rng) {
+  for (int i = 0; i < 480; ++i) {
+    const Pose2 truth = true_step(i);
+    calibration.observe(odometry_step(truth, scale, rotation_scale, noise, rng, drift_rad_per_m),
+                        matched_step(truth, rng));
+  }
+}
+
 // An odometry 5 % long that turns 3 % short and drifts 0.01 rad (0.57 degrees) per metre, with
 // 3 % noise per step: after 200 m the scales are found to within half a percent and the drift to
 // within 15 % (1.5 mrad/m), and the corrected steps predict the matched ones.
 TEST(OdometryCalibration, FindsTheScalesAndTheDrift) {
   OdometryCalibration calibration{OdometryCalibrationOptions{}};
   Rng rng(4);
-  for (int i = 0; i < 480; ++i) {
-    const Pose2 truth = true_step(i);
-    calibration.observe(odometry_step(truth, 1.05, 0.97, 0.03, rng, 0.01),
-                        matched_step(truth, rng));
-  }
+  drive_tour(calibration, 1.05, 0.97, 0.03, 0.01, rng);
   EXPECT_NEAR(calibration.translation_scale(), 1.0 / 1.05, 0.005);
   EXPECT_NEAR(calibration.rotation_scale(), 1.0 / 0.97, 0.005);
   // Per metre the odometry reports: it reports 1.05 m for every metre driven.
@@ -64,11 +71,7 @@ TEST(OdometryCalibration, FindsTheScalesAndTheDrift) {
 TEST(OdometryCalibration, FindsADriftAsLargeAsARealRobots) {
   OdometryCalibration calibration{OdometryCalibrationOptions{}};
   Rng rng(8);
-  for (int i = 0; i < 480; ++i) {
-    const Pose2 truth = true_step(i);
-    calibration.observe(odometry_step(truth, 0.97, 1.03, 0.03, rng, 0.06),
-                        matched_step(truth, rng));
-  }
+  drive_tour(calibration, 0.97, 1.03, 0.03, 0.06, rng);
   EXPECT_NEAR(calibration.drift_rad_per_m(), -0.06 / (1.03 * 0.97), 0.006);
   EXPECT_NEAR(calibration.rotation_scale(), 1.0 / 1.03, 0.005);
 }
@@ -125,10 +128,7 @@ TEST(OdometryCalibration, IgnoresFailedMatchesAndHoldsItsLimits) {
 
   OdometryCalibration far_off{OdometryCalibrationOptions{}};
   Rng rng(7);
-  for (int i = 0; i < 480; ++i) {
-    const Pose2 truth = true_step(i);
-    far_off.observe(odometry_step(truth, 1.15, 1.0, 0.0, rng), matched_step(truth, rng));
-  }
+  drive_tour(far_off, 1.15, 1.0, 0.0, 0.0, rng);
   EXPECT_DOUBLE_EQ(far_off.translation_scale(), 0.9);
 
   OdometryCalibrationOptions off;

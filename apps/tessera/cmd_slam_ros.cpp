@@ -43,6 +43,7 @@ slam::LaserSlamOptions SlamCommand::method_options() const {
   options.loop_closure = !no_loop_closure_;
   options.manhattan = manhattan_;
   if (no_whole_map_) options.final_map_passes = 0;
+  options.odometry_calibration.enabled = !no_odometry_calibration_;
   return options;
 }
 

@@ -212,8 +212,9 @@ class SlamCommand : public Command {
   bool no_loop_closure_ = false;
   bool manhattan_ = false;     // Manhattan heading priors (issue 18 item 7)
   bool no_whole_map_ = false;  // no final pass of every scan against the whole map (0037)
-  /// The method's settings the flags choose (loop closure, Manhattan priors, the whole-map pass),
-  /// the same offline and live.
+  bool no_odometry_calibration_ = false;  // the odometry as it reads (decisions 0039, 0040)
+  /// The method's settings the flags choose (loop closure, Manhattan priors, the whole-map pass,
+  /// the odometry's calibration), the same offline and live.
   [[nodiscard]] slam::LaserSlamOptions method_options() const;
   OutputStreams streams_;  // --record, --serve
   bool quiet_ = false;

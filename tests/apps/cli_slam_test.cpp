@@ -86,6 +86,32 @@ TEST(CliSlam, TheWholeMapPassRunsUnlessTurnedOff) {
   EXPECT_NE(with_trajectory, without_trajectory);
 }
 
+// The odometry's scales and drift are estimated from the matches by default (decisions 0039,
+// 0040) and listed in the report; --no-odometry-calibration takes the odometry as it reads.
+TEST(CliSlam, TheOdometryIsCalibratedUnlessTurnedOff) {
+  TESSERA_REQUIRE_DATA(support::intel_log());
+  TempDir dir;
+  const auto log = intel_slice(dir, 600);
+  const auto run_slam = [&](const std::string& extra, const std::string& name) {
+    const auto out = dir.path() / name;
+    const support::CliRun run =
+        run_cli("slam --quiet --log " + log.string() + extra + " --out " + out.string());
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return std::pair{nlohmann::json::parse(read_bytes(out / "report.json")),
+                     read_bytes(out / "trajectory.txt")};
+  };
+  const auto [with, with_trajectory] = run_slam("", "with");
+  const auto [without, without_trajectory] = run_slam(" --no-odometry-calibration", "without");
+  EXPECT_EQ(with["options"]["odometry_calibration"], true);
+  EXPECT_NE(with["slam"]["odometry_translation_scale"].get<double>(), 1.0);
+  EXPECT_NE(with["slam"]["odometry_drift_rad_per_m"].get<double>(), 0.0);
+  EXPECT_EQ(without["options"]["odometry_calibration"], false);
+  EXPECT_EQ(without["slam"]["odometry_translation_scale"].get<double>(), 1.0);
+  EXPECT_EQ(without["slam"]["odometry_rotation_scale"].get<double>(), 1.0);
+  EXPECT_EQ(without["slam"]["odometry_drift_rad_per_m"].get<double>(), 0.0);
+  EXPECT_NE(with_trajectory, without_trajectory);
+}
+
 TEST(CliSlam, BadLogIsAnInputErrorAndWritesNothing) {
   TempDir dir;
   support::write_bytes(dir / "bad.clf", "FLASER 3 1.0 2.0\n");

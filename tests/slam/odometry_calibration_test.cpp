@@ -64,10 +64,10 @@ TEST(OdometryCalibration, FindsTheScalesAndTheDrift) {
 }
 
 // Intel's robot turns its odometry by about 0.06 rad (3.4 degrees) with every metre it means to go
-// straight (its SLAM trajectory against its odometry, 204 m: 0.059 rad/m). That is a wheel
-// radius about 1 % off its twin's, a calibration error, not a broken odometry: it is found in
-// full, although its first straight segments, 0.12 rad off the uncalibrated prediction, are
-// outliers until the turns have shown the drift.
+// straight (its SLAM trajectory against its odometry, 204 m: 0.059 rad/m). That is one wheel's
+// radius about 2 % off its twin's on a 0.33 m wheel base, a calibration error, not a broken
+// odometry: it is found in full, although its first straight segments, 0.12 rad off the
+// uncalibrated prediction, are outliers until the turns have shown the drift.
 TEST(OdometryCalibration, FindsADriftAsLargeAsARealRobots) {
   OdometryCalibration calibration{OdometryCalibrationOptions{}};
   Rng rng(8);

@@ -36,8 +36,9 @@ struct OdometryCalibrationOptions {
   double memory_m = 200.0;
   double memory_rad = 60.0;
   /// The scales are held within 1 +- this and the drift within +- max_drift_rad_per_m: beyond
-  /// them the odometry is broken, not miscalibrated. A drift of 0.1 rad/m is a wheel radius 2 %
-  /// off its twin's on a 0.4 m wheel base; Intel's robot drifts 0.06 rad/m (decision 0040).
+  /// them the odometry is broken, not miscalibrated. The heading drifts by the difference of the
+  /// wheels' paths over the wheel base: 0.1 rad/m is one wheel's radius 4 % off its twin's on a
+  /// 0.4 m base; Intel's robot drifts 0.06 rad/m (decision 0040).
   double max_scale_error = 0.1;
   double max_drift_rad_per_m = 0.1;
   /// A segment whose matched length differs from the calibrated prediction by more than this

@@ -36,6 +36,18 @@ std::filesystem::path intel_slice(const TempDir& dir, int scans) {
   return path;
 }
 
+/// `slam --quiet --log LOG EXTRA` into dir/name: its report and its trajectory file.
+std::pair<nlohmann::json, std::string> slam_run(const TempDir& dir,
+                                                const std::filesystem::path& log,
+                                                const std::string& extra, const std::string& name) {
+  const auto out = dir.path() / name;
+  const support::CliRun run =
+      run_cli("slam --quiet --log " + log.string() + extra + " --out " + out.string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  return {nlohmann::json::parse(read_bytes(out / "report.json")),
+          read_bytes(out / "trajectory.txt")};
+}
+
 TEST(CliSlam, WritesMapTrajectoryGraphAndReport) {
   TESSERA_REQUIRE_DATA(support::intel_log());
   TempDir dir;
@@ -69,16 +81,8 @@ TEST(CliSlam, TheWholeMapPassRunsUnlessTurnedOff) {
   TESSERA_REQUIRE_DATA(support::intel_log());
   TempDir dir;
   const auto log = intel_slice(dir, 150);
-  const auto run_slam = [&](const std::string& extra, const std::string& name) {
-    const auto out = dir.path() / name;
-    const support::CliRun run =
-        run_cli("slam --quiet --log " + log.string() + extra + " --out " + out.string());
-    EXPECT_EQ(run.exit_code, 0) << run.output;
-    return std::pair{nlohmann::json::parse(read_bytes(out / "report.json")),
-                     read_bytes(out / "trajectory.txt")};
-  };
-  const auto [with, with_trajectory] = run_slam("", "with");
-  const auto [without, without_trajectory] = run_slam(" --no-whole-map", "without");
+  const auto [with, with_trajectory] = slam_run(dir, log, "", "with");
+  const auto [without, without_trajectory] = slam_run(dir, log, " --no-whole-map", "without");
   EXPECT_EQ(with["options"]["final_map_passes"], 1);
   EXPECT_GT(with["slam"]["whole_map_s"].get<double>(), 0.0);
   EXPECT_EQ(without["options"]["final_map_passes"], 0);
@@ -92,16 +96,9 @@ TEST(CliSlam, TheOdometryIsCalibratedUnlessTurnedOff) {
   TESSERA_REQUIRE_DATA(support::intel_log());
   TempDir dir;
   const auto log = intel_slice(dir, 600);
-  const auto run_slam = [&](const std::string& extra, const std::string& name) {
-    const auto out = dir.path() / name;
-    const support::CliRun run =
-        run_cli("slam --quiet --log " + log.string() + extra + " --out " + out.string());
-    EXPECT_EQ(run.exit_code, 0) << run.output;
-    return std::pair{nlohmann::json::parse(read_bytes(out / "report.json")),
-                     read_bytes(out / "trajectory.txt")};
-  };
-  const auto [with, with_trajectory] = run_slam("", "with");
-  const auto [without, without_trajectory] = run_slam(" --no-odometry-calibration", "without");
+  const auto [with, with_trajectory] = slam_run(dir, log, "", "with");
+  const auto [without, without_trajectory] =
+      slam_run(dir, log, " --no-odometry-calibration", "without");
   EXPECT_EQ(with["options"]["odometry_calibration"], true);
   EXPECT_NE(with["slam"]["odometry_translation_scale"].get<double>(), 1.0);
   EXPECT_NE(with["slam"]["odometry_drift_rad_per_m"].get<double>(), 0.0);

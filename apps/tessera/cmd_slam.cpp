@@ -64,8 +64,7 @@ SlamCommand::SlamCommand(CLI::App& app) {
   sub_->add_flag("--no-whole-map", no_whole_map_,
                  "Skip the final match of every scan against the whole map (decision 0037)");
   sub_->add_flag("--no-odometry-calibration", no_odometry_calibration_,
-                 "Take the odometry as it reads: do not estimate its scales and heading drift "
-                 "from the matches (decisions 0039, 0040)");
+                 "Take the odometry as it reads: no scales or drift estimated (decision 0039)");
   add_output_stream_options(*sub_, streams_);
   sub_->add_flag("--quiet", quiet_, "No progress line and no summary");
   add_ros_options();

@@ -10,6 +10,7 @@
 
 #include "tessera/core/assert.hpp"
 #include "tessera/grid/cell_region.hpp"
+#include "tessera/slam/scan_agreement.hpp"
 
 namespace tessera::slam {
 namespace {
@@ -68,6 +69,13 @@ std::optional<std::string> validate(const LocalizerOptions& o) {
   }
   if (!(o.min_map_share > 0.0 && o.min_map_share <= 1.0)) return "min_map_share must be in (0, 1]";
   if (!(o.lost_after_s >= 0.0)) return "lost_after_s must be >= 0";
+  if (!(o.min_scan_agreement >= 0.0 && o.min_scan_agreement <= 1.0)) {
+    return "min_scan_agreement must be in [0, 1]";
+  }
+  if (o.min_scan_compared < 1) return "min_scan_compared must be >= 1";
+  if (!(o.scan_agreement.agreement_m >= 0.0) || !(o.scan_agreement.agreement_share >= 0.0)) {
+    return "scan_agreement must be >= 0";
+  }
   if (!(o.view_s > 0.0)) return "view_s must be > 0";
   if (!(o.search_every_s >= 0.0)) return "search_every_s must be >= 0";
   if (o.search_points.min_num_points < 1 || !(o.search_points.max_length_m > 0.0) ||
@@ -151,6 +159,16 @@ struct Localizer::Impl {
   Pose2 last_odometry;
   bool have_odometry = false;
   std::optional<double> unexplained_since_s;  // first scan of the current run of unexplained ones
+  /// The scans jumped (a kidnapping?) at this scan and no global search has placed the robot
+  /// since: the tracked pose is not trusted, and searches run as if lost.
+  std::optional<double> jumped_at_s;
+  /// The last scan with a pose, to compare the next one with: its points, pose and beam spacing.
+  struct Previous {
+    ScanPoints points;
+    Pose2 T_map_robot;
+    double beam_rad = 0.0;
+  };
+  std::optional<Previous> previous;
   std::deque<ViewScan> view;                  // the scans since tracking failed (view_s of them)
   ProbabilityGrid view_grid;                  // the view's scans at their view poses
   std::optional<double> last_search_s;
@@ -200,6 +218,16 @@ struct Localizer::Impl {
     if (points.empty()) return {};
     return {static_cast<double>(known) / static_cast<double>(points.size()),
             sum / std::max(known, 1)};
+  }
+
+  /// Whether the scans jumped between the previous scan and `points` tracked at T_map_robot: too
+  /// few of its returns agree with the previous scan's (scan_agreement.hpp).
+  [[nodiscard]] bool jumped(const ScanPoints& points, const Pose2& T_map_robot) const {
+    if (!previous) return false;
+    const ScanAgreement a =
+        scan_agreement(previous->points, points, between(previous->T_map_robot, T_map_robot),
+                       previous->beam_rad, options.scan_agreement);
+    return a.compared >= options.min_scan_compared && a.share() < options.min_scan_agreement;
   }
 
   /// Adds a scan to the relocalization view. Odometry alone does not join scans well enough (on
@@ -457,16 +485,27 @@ struct Localizer::Impl {
       const bool contradicted = track(*pose * increment, points.returns_m, out);
       stats.tracking_s += seconds_since(t0);
       pose = out.T_map_robot;
-      if (!contradicted) {
-        unexplained_since_s.reset();
+      if (jumped(points, *pose)) {
+        // The view and the searches start again from this scan: the earlier ones saw elsewhere.
+        ++stats.jumps;
+        jumped_at_s = scan.t_s;
         view.clear();
         candidate.reset();
+        last_search_s.reset();
+      }
+      if (!contradicted) {
+        unexplained_since_s.reset();
+        if (!jumped_at_s) {
+          view.clear();
+          candidate.reset();
+        }
       } else if (!unexplained_since_s) {
         unexplained_since_s = scan.t_s;
       }
       if (unexplained_since_s && scan.t_s - *unexplained_since_s >= options.lost_after_s) {
         // The pose stopped explaining the scans: a kidnapping, or the map is not this place.
         pose.reset();
+        jumped_at_s.reset();
         ++stats.losses;
         out = LocalizedScan{};
         out.t_s = scan.t_s;
@@ -478,10 +517,10 @@ struct Localizer::Impl {
       out.T_map_robot = *pose;
     }
 
-    if (!pose || unexplained_since_s) {
+    if (!pose || unexplained_since_s || jumped_at_s) {
       add_to_view(scan.t_s, scan.odometry, points);
     }
-    if (!pose && !view.empty() && search_due(scan)) {
+    if ((!pose || jumped_at_s) && !view.empty() && search_due(scan)) {
       last_search_s = scan.t_s;
       odometry_at_last_search = scan.odometry;
       relocalize(out);
@@ -491,12 +530,18 @@ struct Localizer::Impl {
         view.clear();
         candidate.reset();
         unexplained_since_s.reset();
+        jumped_at_s.reset();
       }
+    }
+    if (pose && !points.returns_m.empty()) {
+      previous = Previous{points, *pose, std::abs(scan.scan.angle_increment_rad)};
+    } else if (!pose) {
+      previous.reset();
     }
     if (out.state != LocalizationState::kLost) ++stats.tracked;
     // Judged on the part of the scan the map knows: a robot that sees much beyond the session's
     // map is placed by the rest as surely (unknown points would drag the mean down to 0.1).
-    out.confident = out.state != LocalizationState::kLost && !unexplained_since_s &&
+    out.confident = out.state != LocalizationState::kLost && !unexplained_since_s && !jumped_at_s &&
                     out.map_share >= options.min_map_share &&
                     out.map_fit >= options.min_tracking_score;
     return out;
@@ -516,6 +561,8 @@ void Localizer::set_pose(const Pose2& T_map_robot) {
   impl_->view.clear();
   impl_->candidate.reset();
   impl_->unexplained_since_s.reset();
+  impl_->jumped_at_s.reset();
+  impl_->previous.reset();
 }
 
 LocalizedScan Localizer::add_scan(const StampedScan& scan) { return impl_->add_scan(scan); }

@@ -174,45 +174,74 @@ TEST(Localizer, AViewThatFitsNowhereIsPlacedByItsNewestScan) {
   EXPECT_GT(localizer.stats().newest_scan_only, 0);
 }
 
-TEST(Localizer, AKidnappedRobotIsLostAndFoundAgain) {
-  // The robot drives 10 s, then its scans are another run's, elsewhere in the office; its
-  // odometry goes on as if nothing happened.
+/// A kidnapping: the robot drives 10 s, then its scans are another run's, elsewhere in the
+/// office; its odometry goes on as if nothing happened. When it was noticed (the pose withdrawn or
+/// doubted: not tracking, or not confident, from that scan on), when it was found again, and the
+/// localizer's counts; every confident pose after the jump must be right.
+struct Kidnapping {
+  std::optional<double> noticed_after_s, found_after_s;
+  LocalizerStats stats;
+};
+Kidnapping kidnap(const LocalizerOptions& options) {
   const SimulatedLaserRun before = office_run(31, 10.0);
   const SimulatedLaserRun after = office_run(32, 20.0);
-  const LocalizerOptions options;
   Localizer localizer(office_map(), options);
   localizer.set_pose(before.truth.front().pose);
   for (const StampedScan& scan : before.log.scans) localizer.add_scan(scan);
   const Pose2 T_odom_jump =
       before.log.scans.back().odometry * after.log.scans.front().odometry.inverse();
   const double t0 = before.log.scans.back().t_s + 0.2;
-  // Noticed: the first scan no longer tracked (lost, or found again by a search at once).
-  std::optional<double> noticed_at_s, found_at_s;
+  Kidnapping k;
   for (std::size_t i = 0; i < after.log.scans.size(); ++i) {
     StampedScan scan = after.log.scans[i];
     scan.t_s += t0;
     scan.odometry = T_odom_jump * scan.odometry;
     const LocalizedScan s = localizer.add_scan(scan);
-    if (s.state != LocalizationState::kTracking && !noticed_at_s) noticed_at_s = s.t_s - t0;
+    const bool doubted = localizer.stats().jumps > 0;
+    if ((s.state != LocalizationState::kTracking || doubted) && !k.noticed_after_s) {
+      k.noticed_after_s = s.t_s - t0;
+    }
     if (!s.confident) continue;
     const PoseError e = error_of(s.T_map_robot, after.truth[i].pose);
     if (e.m < 0.1 && e.rad < deg_to_rad(3.0)) {
-      if (!found_at_s) found_at_s = s.t_s - t0;
+      if (!k.found_after_s) k.found_after_s = s.t_s - t0;
     } else {
       ADD_FAILURE() << "a confident wrong pose after the kidnapping, scan " << i << ": " << e.m
                     << " m";
     }
   }
-  ASSERT_TRUE(noticed_at_s.has_value());
-  EXPECT_LE(*noticed_at_s, options.lost_after_s + 0.5);
-  ASSERT_TRUE(found_at_s.has_value());
-  EXPECT_LE(*found_at_s, 8.0);
-  EXPECT_GE(localizer.stats().losses, 1);
-  EXPECT_GE(localizer.stats().relocalizations, 1);
+  k.stats = localizer.stats();
   // Every search ends one way: accepted, or refused for exactly one reason.
-  const LocalizerStats& st = localizer.stats();
+  const LocalizerStats& st = k.stats;
   EXPECT_EQ(st.searches, st.relocalizations + st.no_match + st.unfit + st.see_through +
                              st.ambiguous + st.unconfirmed);
+  return k;
+}
+
+TEST(Localizer, AKidnappedRobotIsDoubtedAtOnceAndFoundAgain) {
+  // The first scan after the jump disagrees with the one before it: the pose is doubted there,
+  // before the map has contradicted it for lost_after_s, and a global search places the robot.
+  const Kidnapping k = kidnap(LocalizerOptions{});
+  ASSERT_TRUE(k.noticed_after_s.has_value());
+  EXPECT_EQ(*k.noticed_after_s, 0.0);
+  EXPECT_EQ(k.stats.jumps, 1);
+  ASSERT_TRUE(k.found_after_s.has_value());
+  EXPECT_LE(*k.found_after_s, 8.0);
+  EXPECT_GE(k.stats.relocalizations, 1);
+}
+
+TEST(Localizer, AKidnappedRobotIsLostWhereTheScansDoNotShowAJump) {
+  // With the jump test off, the map's contradiction alone notices the kidnapping.
+  LocalizerOptions options;
+  options.min_scan_agreement = 0.0;
+  const Kidnapping k = kidnap(options);
+  EXPECT_EQ(k.stats.jumps, 0);
+  ASSERT_TRUE(k.noticed_after_s.has_value());
+  EXPECT_LE(*k.noticed_after_s, options.lost_after_s + 0.5);
+  ASSERT_TRUE(k.found_after_s.has_value());
+  EXPECT_LE(*k.found_after_s, 8.0);
+  EXPECT_GE(k.stats.losses, 1);
+  EXPECT_GE(k.stats.relocalizations, 1);
 }
 
 TEST(Localizer, ASymmetricRoomIsNeverClaimed) {
@@ -420,6 +449,15 @@ TEST(Localizer, OptionsOutsideTheirRangeAreNamed) {
   o = {};
   o.new_view_motion.angular_rad = -0.1;
   EXPECT_EQ(validate(o).value_or(""), "new_view_motion must be >= 0");
+  o = {};
+  o.min_scan_agreement = 1.2;
+  EXPECT_EQ(validate(o).value_or(""), "min_scan_agreement must be in [0, 1]");
+  o = {};
+  o.min_scan_compared = 0;
+  EXPECT_EQ(validate(o).value_or(""), "min_scan_compared must be >= 1");
+  o = {};
+  o.scan_agreement.agreement_m = -0.1;
+  EXPECT_EQ(validate(o).value_or(""), "scan_agreement must be >= 0");
 }
 
 }  // namespace

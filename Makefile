@@ -107,6 +107,14 @@ fusion-claims: cli
 localize-bench: build
 	build/dev/bench/slam/localize_bench
 
+# The same on another building: Freiburg 079, map 0-530 s, localize 530-1,061 s (about 25 minutes;
+# docs/localization.md, "Another building").
+FR079 = $${TESSERA_DATA_DIR:-../shared/data}/laser/fr079
+.PHONY: localize-bench-fr079
+localize-bench-fr079: build
+	build/dev/bench/slam/localize_bench --log $(FR079)/freiburg-079-corrected.log \
+	  --relations $(FR079)/fr079.relations --time-offset 1211.467 --map-s 530
+
 # Issue 16's bounded lifelong mapping: the Intel log mapped, then resumed five times over the same
 # session; nodes, peak memory, file size and relations per pass (docs/sessions.md).
 .PHONY: lifelong

@@ -183,6 +183,7 @@ int LocalizeCommand::write_outputs(const std::vector<slam::LocalizedScan>& scans
                             {"relocalizations", st.relocalizations},
                             {"ambiguous_searches", st.ambiguous},
                             {"losses", st.losses},
+                            {"jumps", st.jumps},
                             {"tracking_wall_s", st.tracking_s},
                             {"search_wall_s", st.search_s}};
   if (metric) report["relations"] = relations_report(*metric, {})["relations"];
@@ -211,10 +212,11 @@ int LocalizeCommand::write_outputs(const std::vector<slam::LocalizedScan>& scans
   if (!quiet_) {
     fmt::print(
         "localize: {} of {} scans localized, first pose after {:.1f} s of data, {} "
-        "relocalizations ({} searches, {} ambiguous), {} losses; {:.1f} s for {:.1f} s of data "
-        "({:.1f}x real time)\n",
+        "relocalizations ({} searches, {} ambiguous), {} losses, {} jumps; {:.1f} s for {:.1f} s "
+        "of "
+        "data ({:.1f}x real time)\n",
         st.tracked, st.scans, first_pose_after_s.value_or(NAN), st.relocalizations, st.searches,
-        st.ambiguous, st.losses, wall_s, duration_s,
+        st.ambiguous, st.losses, st.jumps, wall_s, duration_s,
         realtime_factor(duration_s, wall_s).value_or(0.0));
     if (metric) print_relations_summary(*metric);
     fmt::print("outputs: {}/poses.csv trajectory.txt localization.png report.json\n",

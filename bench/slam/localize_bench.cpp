@@ -10,7 +10,8 @@
 //    (each strays from the truth in places, decision 0033); and every confident pose within
 //    --settle-s after it, so that a confident wrong pose shows;
 //  - kidnapping: --kidnaps jumps of the scans to another part of the building (odometry carries on
-//    unaware): the seconds until tracking is lost, and until it is found again, correctly.
+//    unaware): the seconds until the pose is withdrawn or doubted (the scans jumped), and until it
+//    is found again, correctly.
 //
 //   localize_bench [--log FILE] [--relations FILE] [--time-offset S] [--map-s S] [--to-s S]
 //                  [--starts N] [--only-starts K,L,...] [--kidnaps N] [--settle-s S]
@@ -190,10 +191,10 @@ int run(int argc, char** argv) {
     const double data_s = rest.back().t_s - rest.front().t_s;
     const slam::LocalizerStats& st = localizer.stats();
     std::printf(
-        "tracking: %d of %d scans localized, %d searches (%d ambiguous), %d losses; "
+        "tracking: %d of %d scans localized, %d searches (%d ambiguous), %d losses, %d jumps; "
         "%.2f s for %.0f s of data (%.0fx real time; search %.2f s)\n",
-        st.tracked, st.scans, st.searches, st.ambiguous, st.losses, wall_s, data_s, data_s / wall_s,
-        st.search_s);
+        st.tracked, st.scans, st.searches, st.ambiguous, st.losses, st.jumps, wall_s, data_s,
+        data_s / wall_s, st.search_s);
     std::printf("tracking: largest offset from the whole log's SLAM run %.3f m\n", worst_m);
     Result<RelationMetric> m = relation_metric(trajectory, *relations, time_offset_s);
     if (m) {
@@ -303,6 +304,7 @@ int run(int argc, char** argv) {
     const Pose2 T_jump = rest[a - 1].odometry * rest[b].odometry.inverse();
     const double shift_s = rest[a - 1].t_s - rest[b].t_s + 0.1;
     std::optional<double> lost_s, found_s;
+    const int jumps_before = localizer.stats().jumps;
     bool wrong_here = false;
     for (std::size_t i = b; i < rest.size() && i < b + 300; ++i) {
       StampedScan scan = rest[i];
@@ -310,7 +312,9 @@ int run(int argc, char** argv) {
       scan.odometry = T_jump * scan.odometry;
       const slam::LocalizedScan s = localizer.add_scan(scan);
       const double after_s = rest[i].t_s - rest[b].t_s;
-      if (s.state != slam::LocalizationState::kTracking && !lost_s) lost_s = after_s;
+      // Noticed: the pose withdrawn, or doubted because the scans jumped (not confident since).
+      const bool doubted = localizer.stats().jumps > jumps_before;
+      if ((s.state == slam::LocalizationState::kLost || doubted) && !lost_s) lost_s = after_s;
       if (!s.confident) continue;
       const Verdict v = verdict(s.T_map_robot, i);
       count_off(v);

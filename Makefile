@@ -121,6 +121,12 @@ localize-bench-fr079: build
 lifelong: cli
 	python3 scripts/lifelong_table.py
 
+# The same on Freiburg 079 (about 25 minutes; docs/sessions.md).
+.PHONY: lifelong-fr079
+lifelong-fr079: cli
+	python3 scripts/lifelong_table.py --log $(FR079)/freiburg-079-corrected.log \
+	  --relations $(FR079)/fr079.relations --time-offset 1211.467 --out out/lifelong-fr079
+
 # Issue 14's throughput benchmark: tessera team with 1, 3 and 8 robot processes over DDS; prints
 # map and claim traffic per robot and the scan-to-map latency (docs/ros2.md).
 .PHONY: team-bench

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Bounded lifelong mapping (issue 16, docs/sessions.md): map the Intel raw log and save the
-session, then resume that session with the same log again and again, saving over it each time.
+"""Bounded lifelong mapping (issue 16, docs/sessions.md): map the Intel raw log (or --log) and save
+the session, then resume that session with the same log again and again, saving over it each time.
 Per pass: the session's nodes after the save, the process's peak memory (GNU time's maximum
 resident set size), the session file's size, the relation error of the pass's own trajectory and
 the wall time. --keep-all-passes runs the same without trimming. --check: exit 1 unless the
@@ -9,6 +9,7 @@ within 10 % of it (issue 16's bar). Exits 77 (skip) when the log is missing, or 
 
 usage: scripts/lifelong_table.py [--tessera build/dev/apps/tessera/tessera] [--passes 5]
                                  [--to-s S] [--keep-all-passes] [--check] [--out out/lifelong]
+                                 [--log LOG --relations FILE --time-offset S]
 """
 import argparse
 import json
@@ -26,11 +27,10 @@ INTEL = DATA / "laser" / "intel"
 TIME_OFFSET_S = "976052857.337284"  # the relations' clock minus the log's (docs/sessions.md)
 
 
-def run_pass(tessera, out, session, resume, keep_all, to_s):
-    cmd = ["/usr/bin/time", "-v", tessera, "slam", "--quiet", "--log",
-           str(INTEL / "intel-raw-first5505-sot.clf"), "--relations",
-           str(INTEL / "intel.relations"), "--time-offset", TIME_OFFSET_S, "--save", str(session),
-           "--out", str(out)]
+def run_pass(tessera, log, out, session, resume, keep_all, to_s):
+    cmd = ["/usr/bin/time", "-v", tessera, "slam", "--quiet", "--log", log["log"],
+           "--relations", log["relations"], "--time-offset", log["time_offset"], "--save",
+           str(session), "--out", str(out)]
     if to_s is not None:
         cmd += ["--to-s", str(to_s)]
     if resume:
@@ -65,14 +65,18 @@ def main():
     p.add_argument("--keep-all-passes", action="store_true")
     p.add_argument("--check", action="store_true")
     p.add_argument("--out", default=str(ROOT / "out/lifelong"))
+    p.add_argument("--log", default=str(INTEL / "intel-raw-first5505-sot.clf"))
+    p.add_argument("--relations", default=str(INTEL / "intel.relations"))
+    p.add_argument("--time-offset", default=TIME_OFFSET_S, help="the relations' clock minus the log's")
     a = p.parse_args()
-    if not (INTEL / "intel-raw-first5505-sot.clf").exists():
-        print(f"{INTEL}: missing (the Intel raw log)", file=sys.stderr)
+    log = {"log": a.log, "relations": a.relations, "time_offset": a.time_offset}
+    if not pathlib.Path(a.log).exists():
+        print(f"{a.log}: missing", file=sys.stderr)
         # ctest reads 77 as skipped; with CI=true a missing dataset is a failure.
         return 1 if os.environ.get("CI") == "true" else 77
     out = pathlib.Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
-    session = out / "intel.tsm"
+    session = out / "session.tsm"
     if session.exists():
         session.unlink()
     print("| pass | nodes while running | nodes saved | peak memory | session file | relations "
@@ -80,7 +84,7 @@ def main():
     print("|---|---|---|---|---|---|---|")
     passes = []
     for k in range(a.passes + 1):
-        r = run_pass(a.tessera, out / f"pass{k}", session, k > 0, a.keep_all_passes, a.to_s)
+        r = run_pass(a.tessera, log, out / f"pass{k}", session, k > 0, a.keep_all_passes, a.to_s)
         passes.append(r)
         name = "first run" if k == 0 else f"resume {k}"
         print(f"| {name} | {r['nodes_run']:,} | {r['nodes_saved']:,} | {r['peak_mb']:.0f} MB | "

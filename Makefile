@@ -121,7 +121,7 @@ localize-bench-fr079: build
 lifelong: cli
 	python3 scripts/lifelong_table.py
 
-# The same on Freiburg 079 (about 25 minutes; docs/sessions.md).
+# The same on Freiburg 079 (about 10 minutes on an idle machine; docs/sessions.md).
 .PHONY: lifelong-fr079
 lifelong-fr079: cli
 	python3 scripts/lifelong_table.py --log $(FR079)/freiburg-079-corrected.log \

@@ -212,9 +212,8 @@ int LocalizeCommand::write_outputs(const std::vector<slam::LocalizedScan>& scans
   if (!quiet_) {
     fmt::print(
         "localize: {} of {} scans localized, first pose after {:.1f} s of data, {} "
-        "relocalizations ({} searches, {} ambiguous), {} losses, {} jumps; {:.1f} s for {:.1f} s "
-        "of "
-        "data ({:.1f}x real time)\n",
+        "relocalizations ({} searches, {} ambiguous), {} losses, {} jumps; "
+        "{:.1f} s for {:.1f} s of data ({:.1f}x real time)\n",
         st.tracked, st.scans, first_pose_after_s.value_or(NAN), st.relocalizations, st.searches,
         st.ambiguous, st.losses, st.jumps, wall_s, duration_s,
         realtime_factor(duration_s, wall_s).value_or(0.0));

@@ -3,15 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <utility>
 #include <vector>
 
 namespace tessera::slam {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
 
 ScanAgreement scan_agreement(const ScanPoints& earlier, const ScanPoints& later,
                              const Pose2& T_earlier_later, double beam_rad,
@@ -43,8 +39,9 @@ ScanAgreement scan_agreement(const ScanPoints& earlier, const ScanPoints& later,
     bool found = false, agrees = false;
     look(bearing - beam_rad, bearing + beam_rad, range_m, found, agrees);
     // A 360-degree scan's beams meet across the bearing +-pi.
-    if (bearing - beam_rad < -kPi) look(bearing - beam_rad + 2 * kPi, kPi, range_m, found, agrees);
-    if (bearing + beam_rad > kPi) look(-kPi, bearing + beam_rad - 2 * kPi, range_m, found, agrees);
+    constexpr double pi = std::numbers::pi;
+    if (bearing - beam_rad < -pi) look(bearing - beam_rad + 2 * pi, pi, range_m, found, agrees);
+    if (bearing + beam_rad > pi) look(-pi, bearing + beam_rad - 2 * pi, range_m, found, agrees);
     out.compared += found ? 1 : 0;
     out.agreeing += agrees ? 1 : 0;
   }

@@ -175,9 +175,9 @@ TEST(Localizer, AViewThatFitsNowhereIsPlacedByItsNewestScan) {
 }
 
 /// A kidnapping: the robot drives 10 s, then its scans are another run's, elsewhere in the
-/// office; its odometry goes on as if nothing happened. When it was noticed (the pose withdrawn or
-/// doubted: not tracking, or not confident, from that scan on), when it was found again, and the
-/// localizer's counts; every confident pose after the jump must be right.
+/// office; its odometry goes on as if nothing happened. When it was noticed (the pose withdrawn,
+/// or doubted because the scans jumped), when it was found again, and the localizer's counts;
+/// no jump before the kidnapping, and every confident pose after it right.
 struct Kidnapping {
   std::optional<double> noticed_after_s, found_after_s;
   LocalizerStats stats;
@@ -188,6 +188,7 @@ Kidnapping kidnap(const LocalizerOptions& options) {
   Localizer localizer(office_map(), options);
   localizer.set_pose(before.truth.front().pose);
   for (const StampedScan& scan : before.log.scans) localizer.add_scan(scan);
+  EXPECT_EQ(localizer.stats().jumps, 0);
   const Pose2 T_odom_jump =
       before.log.scans.back().odometry * after.log.scans.front().odometry.inverse();
   const double t0 = before.log.scans.back().t_s + 0.2;

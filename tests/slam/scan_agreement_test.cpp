@@ -5,11 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace tessera::slam {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPi = std::numbers::pi;
 
 /// A scan in a 6 m x 4 m room ([0, 6] x [0, 4]) with a 1 m square pillar at [4, 5] x [1, 2],
 /// taken from T_room_robot by a sensor at the robot's origin: `beams` beams over `fov_rad`,

@@ -184,6 +184,7 @@ int LocalizeCommand::write_outputs(const std::vector<slam::LocalizedScan>& scans
                             {"ambiguous_searches", st.ambiguous},
                             {"losses", st.losses},
                             {"jumps", st.jumps},
+                            {"glitches", st.glitches},
                             {"tracking_wall_s", st.tracking_s},
                             {"search_wall_s", st.search_s}};
   if (metric) report["relations"] = relations_report(*metric, {})["relations"];

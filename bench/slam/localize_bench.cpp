@@ -191,10 +191,10 @@ int run(int argc, char** argv) {
     const double data_s = rest.back().t_s - rest.front().t_s;
     const slam::LocalizerStats& st = localizer.stats();
     std::printf(
-        "tracking: %d of %d scans localized, %d searches (%d ambiguous), %d losses, %d jumps; "
-        "%.2f s for %.0f s of data (%.0fx real time; search %.2f s)\n",
-        st.tracked, st.scans, st.searches, st.ambiguous, st.losses, st.jumps, wall_s, data_s,
-        data_s / wall_s, st.search_s);
+        "tracking: %d of %d scans localized, %d searches (%d ambiguous), %d losses, %d jumps "
+        "(%d glitches); %.2f s for %.0f s of data (%.0fx real time; search %.2f s)\n",
+        st.tracked, st.scans, st.searches, st.ambiguous, st.losses, st.jumps, st.glitches, wall_s,
+        data_s, data_s / wall_s, st.search_s);
     std::printf("tracking: largest offset from the whole log's SLAM run %.3f m\n", worst_m);
     Result<RelationMetric> m = relation_metric(trajectory, *relations, time_offset_s);
     if (m) {

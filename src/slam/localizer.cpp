@@ -73,6 +73,7 @@ std::optional<std::string> validate(const LocalizerOptions& o) {
     return "min_scan_agreement must be in [0, 1]";
   }
   if (o.min_scan_compared < 1) return "min_scan_compared must be >= 1";
+  if (!(o.max_glitch_s >= 0.0)) return "max_glitch_s must be >= 0";
   if (!(o.scan_agreement.agreement_m >= 0.0) || !(o.scan_agreement.agreement_share >= 0.0)) {
     return "scan_agreement must be >= 0";
   }
@@ -169,6 +170,8 @@ struct Localizer::Impl {
     double beam_rad = 0.0;
   };
   std::optional<Previous> previous;
+  /// The last scan before the jump, while a scan agreeing with it again would show a glitch.
+  std::optional<Previous> before_jump;
   std::deque<ViewScan> view;                  // the scans since tracking failed (view_s of them)
   ProbabilityGrid view_grid;                  // the view's scans at their view poses
   std::optional<double> last_search_s;
@@ -220,14 +223,15 @@ struct Localizer::Impl {
             sum / std::max(known, 1)};
   }
 
-  /// Whether the scans jumped between the previous scan and `points` tracked at T_map_robot: too
-  /// few of its returns agree with the previous scan's (scan_agreement.hpp).
-  [[nodiscard]] bool jumped(const ScanPoints& points, const Pose2& T_map_robot) const {
-    if (!previous) return false;
+  /// Whether `points` tracked at T_map_robot agree with an earlier scan (scan_agreement.hpp): true
+  /// or false when enough returns could be compared, nullopt when too few.
+  [[nodiscard]] std::optional<bool> agree(const Previous& earlier, const ScanPoints& points,
+                                          const Pose2& T_map_robot) const {
     const ScanAgreement a =
-        scan_agreement(previous->points, points, between(previous->T_map_robot, T_map_robot),
-                       previous->beam_rad, options.scan_agreement);
-    return a.compared >= options.min_scan_compared && a.share() < options.min_scan_agreement;
+        scan_agreement(earlier.points, points, between(earlier.T_map_robot, T_map_robot),
+                       earlier.beam_rad, options.scan_agreement);
+    if (a.compared < options.min_scan_compared) return std::nullopt;
+    return a.share() >= options.min_scan_agreement;
   }
 
   /// Adds a scan to the relocalization view. Odometry alone does not join scans well enough (on
@@ -485,10 +489,21 @@ struct Localizer::Impl {
       const bool contradicted = track(*pose * increment, points.returns_m, out);
       stats.tracking_s += seconds_since(t0);
       pose = out.T_map_robot;
-      if (jumped(points, *pose)) {
-        // The view and the searches start again from this scan: the earlier ones saw elsewhere.
+      if (before_jump && scan.t_s - *jumped_at_s > options.max_glitch_s) before_jump.reset();
+      if (before_jump && agree(*before_jump, points, *pose) == true) {
+        // The scans are back where they were before the jump: a bad scan or something that
+        // passed close to the sensor, not a kidnapping. The doubt ends.
+        ++stats.glitches;
+        jumped_at_s.reset();
+        before_jump.reset();
+      } else if (previous && agree(*previous, points, *pose) == false) {
+        // The scans jumped. The view and the searches start again from this scan: the earlier
+        // ones saw elsewhere. The doubt dates from the first jump, and so does its glitch window.
         ++stats.jumps;
-        jumped_at_s = scan.t_s;
+        if (!jumped_at_s) {
+          jumped_at_s = scan.t_s;
+          before_jump = previous;
+        }
         view.clear();
         candidate.reset();
         last_search_s.reset();
@@ -506,6 +521,7 @@ struct Localizer::Impl {
         // The pose stopped explaining the scans: a kidnapping, or the map is not this place.
         pose.reset();
         jumped_at_s.reset();
+        before_jump.reset();
         ++stats.losses;
         out = LocalizedScan{};
         out.t_s = scan.t_s;
@@ -531,6 +547,7 @@ struct Localizer::Impl {
         candidate.reset();
         unexplained_since_s.reset();
         jumped_at_s.reset();
+        before_jump.reset();
       }
     }
     if (pose && !points.returns_m.empty()) {
@@ -563,6 +580,7 @@ void Localizer::set_pose(const Pose2& T_map_robot) {
   impl_->unexplained_since_s.reset();
   impl_->jumped_at_s.reset();
   impl_->previous.reset();
+  impl_->before_jump.reset();
 }
 
 LocalizedScan Localizer::add_scan(const StampedScan& scan) { return impl_->add_scan(scan); }

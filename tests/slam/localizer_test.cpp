@@ -226,6 +226,7 @@ TEST(Localizer, AKidnappedRobotIsDoubtedAtOnceAndFoundAgain) {
   ASSERT_TRUE(k.noticed_after_s.has_value());
   EXPECT_EQ(*k.noticed_after_s, 0.0);
   EXPECT_EQ(k.stats.jumps, 1);
+  EXPECT_EQ(k.stats.glitches, 0);  // the scans never come back to where they were
   ASSERT_TRUE(k.found_after_s.has_value());
   EXPECT_LE(*k.found_after_s, 8.0);
   EXPECT_GE(k.stats.relocalizations, 1);
@@ -243,6 +244,32 @@ TEST(Localizer, AKidnappedRobotIsLostWhereTheScansDoNotShowAJump) {
   EXPECT_LE(*k.found_after_s, 8.0);
   EXPECT_GE(k.stats.losses, 1);
   EXPECT_GE(k.stats.relocalizations, 1);
+}
+
+TEST(Localizer, OneBadScanIsAGlitchNotAKidnapping) {
+  // One scan of the run is another place's (a bad scan); the next agrees with the one before it
+  // again, so the doubt ends there, with no search and no loss.
+  const SimulatedLaserRun run = office_run(11, 20.0);
+  const SimulatedLaserRun elsewhere = office_run(32, 20.0);
+  const LocalizerOptions options;
+  Localizer localizer(office_map(), options);
+  localizer.set_pose(run.truth.front().pose);
+  constexpr std::size_t kBad = 50;
+  for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
+    StampedScan scan = run.log.scans[i];
+    if (i == kBad) scan.scan = elsewhere.log.scans[i].scan;
+    const LocalizedScan s = localizer.add_scan(scan);
+    ASSERT_NE(s.state, LocalizationState::kLost) << "scan " << i;
+    if (i == kBad) {
+      EXPECT_FALSE(s.confident);
+      continue;
+    }
+    EXPECT_TRUE(s.confident) << "scan " << i;
+    EXPECT_LT(error_of(s.T_map_robot, run.truth[i].pose).m, 0.1) << "scan " << i;
+  }
+  EXPECT_EQ(localizer.stats().jumps, 1);
+  EXPECT_EQ(localizer.stats().glitches, 1);
+  EXPECT_EQ(localizer.stats().losses, 0);
 }
 
 TEST(Localizer, ASymmetricRoomIsNeverClaimed) {
@@ -459,6 +486,9 @@ TEST(Localizer, OptionsOutsideTheirRangeAreNamed) {
   o = {};
   o.scan_agreement.agreement_m = -0.1;
   EXPECT_EQ(validate(o).value_or(""), "scan_agreement must be >= 0");
+  o = {};
+  o.max_glitch_s = -1.0;
+  EXPECT_EQ(validate(o).value_or(""), "max_glitch_s must be >= 0");
 }
 
 }  // namespace

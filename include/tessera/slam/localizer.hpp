@@ -12,8 +12,9 @@
 //    of its returns where the previous scan's beams ended: scan_agreement.hpp), the robot was
 //    moved or the scans jumped; the pose is no longer trusted, and the global search below runs
 //    while tracking goes on, until it confirms the tracked pose or places the robot elsewhere
-//    (decision 0042). The map alone may not show a kidnapping: around the old pose the tracker
-//    can find a place where the new scans fit passably, and follow it.
+//    (decision 0042). A jump undone at once (the scans agree with the one before it again) was a
+//    glitch, and the doubt ends. The map alone may not show a kidnapping: around the old pose the
+//    tracker can find a place where the new scans fit passably, and follow it.
 //  - Relocalization: the scans since tracking failed, joined into one view of the last view_s
 //    seconds by a small local SLAM, are searched over the whole map and a full turn by branch and
 //    bound (Hess et al. 2016 Sec. V-B; the loop closer's search with the map as one submap, each
@@ -72,6 +73,10 @@ struct LocalizerOptions {
   double min_scan_agreement = 0.5;
   int min_scan_compared = 20;
   ScanAgreementOptions scan_agreement;
+  /// A jump undone within max_glitch_s of data (a scan agrees again with the last one before the
+  /// jump) was a glitch: a bad scan, or something passing close to the sensor, not a kidnapping;
+  /// the doubt ends. After a kidnapping the scans see another place and never agree with it.
+  double max_glitch_s = 1.0;
 
   /// Relocalization: the view searched is the scans of the last view_s seconds (since tracking
   /// failed), joined by matching each against the earlier ones (a small local SLAM, inserted as
@@ -181,6 +186,7 @@ struct LocalizerStats {
   int newest_scan_only = 0;  // searches whose view fitted nowhere, matched by its newest scan
   int losses = 0;           // times tracking was lost after having a pose
   int jumps = 0;            // scans that disagreed with the one before (the pose is doubted)
+  int glitches = 0;         // jumps undone within max_glitch_s (the doubt ended)
   double tracking_s = 0.0;  // wall time of tracking
   double search_s = 0.0;    // wall time of global searches
 };

@@ -248,7 +248,7 @@ TEST(Localizer, AKidnappedRobotIsLostWhereTheScansDoNotShowAJump) {
 
 TEST(Localizer, OneBadScanIsAGlitchNotAKidnapping) {
   // One scan of the run is another place's (a bad scan); the next agrees with the one before it
-  // again, so the doubt ends there, with no search and no loss.
+  // again, so the doubt ends there: confident again at once, and no loss.
   const SimulatedLaserRun run = office_run(11, 20.0);
   const SimulatedLaserRun elsewhere = office_run(32, 20.0);
   const LocalizerOptions options;

@@ -160,9 +160,6 @@ struct Localizer::Impl {
   Pose2 last_odometry;
   bool have_odometry = false;
   std::optional<double> unexplained_since_s;  // first scan of the current run of unexplained ones
-  /// The scans jumped (a kidnapping?) at this scan and no global search has placed the robot
-  /// since: the tracked pose is not trusted, and searches run as if lost.
-  std::optional<double> jumped_at_s;
   /// The last scan with a pose, to compare the next one with: its points, pose and beam spacing.
   struct Previous {
     ScanPoints points;
@@ -170,8 +167,14 @@ struct Localizer::Impl {
     double beam_rad = 0.0;
   };
   std::optional<Previous> previous;
-  /// The last scan before the jump, while a scan agreeing with it again would show a glitch.
-  std::optional<Previous> before_jump;
+  /// The scans jumped (a kidnapping?) at since_s and no global search has placed the robot since:
+  /// the tracked pose is not trusted, and searches run as if lost. before_jump is the last scan
+  /// before the jump while a scan agreeing with it again would show a glitch (max_glitch_s).
+  struct Doubt {
+    double since_s = 0.0;
+    std::optional<Previous> before_jump;
+  };
+  std::optional<Doubt> doubt;
   std::deque<ViewScan> view;                  // the scans since tracking failed (view_s of them)
   ProbabilityGrid view_grid;                  // the view's scans at their view poses
   std::optional<double> last_search_s;
@@ -479,7 +482,7 @@ struct Localizer::Impl {
     LocalizedScan out;
     out.t_s = scan.t_s;
     out.score = kMinProbability;
-    const ScanPoints points = scan_to_points(scan.scan, scan.laser_in_robot, options.points);
+    ScanPoints points = scan_to_points(scan.scan, scan.laser_in_robot, options.points);
     const Pose2 increment = have_odometry ? between(last_odometry, scan.odometry) : Pose2{};
     last_odometry = scan.odometry;
     have_odometry = true;
@@ -489,28 +492,24 @@ struct Localizer::Impl {
       const bool contradicted = track(*pose * increment, points.returns_m, out);
       stats.tracking_s += seconds_since(t0);
       pose = out.T_map_robot;
-      if (before_jump && scan.t_s - *jumped_at_s > options.max_glitch_s) before_jump.reset();
-      if (before_jump && agree(*before_jump, points, *pose) == true) {
+      if (doubt && scan.t_s - doubt->since_s > options.max_glitch_s) doubt->before_jump.reset();
+      if (doubt && doubt->before_jump && agree(*doubt->before_jump, points, *pose) == true) {
         // The scans are back where they were before the jump: a bad scan or something that
         // passed close to the sensor, not a kidnapping. The doubt ends.
         ++stats.glitches;
-        jumped_at_s.reset();
-        before_jump.reset();
+        doubt.reset();
       } else if (previous && agree(*previous, points, *pose) == false) {
         // The scans jumped. The view and the searches start again from this scan: the earlier
         // ones saw elsewhere. The doubt dates from the first jump, and so does its glitch window.
         ++stats.jumps;
-        if (!jumped_at_s) {
-          jumped_at_s = scan.t_s;
-          before_jump = previous;
-        }
+        if (!doubt) doubt = Doubt{scan.t_s, previous};
         view.clear();
         candidate.reset();
         last_search_s.reset();
       }
       if (!contradicted) {
         unexplained_since_s.reset();
-        if (!jumped_at_s) {
+        if (!doubt) {
           view.clear();
           candidate.reset();
         }
@@ -520,8 +519,7 @@ struct Localizer::Impl {
       if (unexplained_since_s && scan.t_s - *unexplained_since_s >= options.lost_after_s) {
         // The pose stopped explaining the scans: a kidnapping, or the map is not this place.
         pose.reset();
-        jumped_at_s.reset();
-        before_jump.reset();
+        doubt.reset();
         ++stats.losses;
         out = LocalizedScan{};
         out.t_s = scan.t_s;
@@ -533,10 +531,10 @@ struct Localizer::Impl {
       out.T_map_robot = *pose;
     }
 
-    if (!pose || unexplained_since_s || jumped_at_s) {
+    if (!pose || unexplained_since_s || doubt) {
       add_to_view(scan.t_s, scan.odometry, points);
     }
-    if ((!pose || jumped_at_s) && !view.empty() && search_due(scan)) {
+    if ((!pose || doubt) && !view.empty() && search_due(scan)) {
       last_search_s = scan.t_s;
       odometry_at_last_search = scan.odometry;
       relocalize(out);
@@ -546,21 +544,20 @@ struct Localizer::Impl {
         view.clear();
         candidate.reset();
         unexplained_since_s.reset();
-        jumped_at_s.reset();
-        before_jump.reset();
+        doubt.reset();
       }
-    }
-    if (pose && !points.returns_m.empty()) {
-      previous = Previous{points, *pose, std::abs(scan.scan.angle_increment_rad)};
-    } else if (!pose) {
-      previous.reset();
     }
     if (out.state != LocalizationState::kLost) ++stats.tracked;
     // Judged on the part of the scan the map knows: a robot that sees much beyond the session's
     // map is placed by the rest as surely (unknown points would drag the mean down to 0.1).
-    out.confident = out.state != LocalizationState::kLost && !unexplained_since_s && !jumped_at_s &&
+    out.confident = out.state != LocalizationState::kLost && !unexplained_since_s && !doubt &&
                     out.map_share >= options.min_map_share &&
                     out.map_fit >= options.min_tracking_score;
+    if (pose && !points.returns_m.empty()) {
+      previous = Previous{std::move(points), *pose, std::abs(scan.scan.angle_increment_rad)};
+    } else if (!pose) {
+      previous.reset();
+    }
     return out;
   }
 };
@@ -578,9 +575,8 @@ void Localizer::set_pose(const Pose2& T_map_robot) {
   impl_->view.clear();
   impl_->candidate.reset();
   impl_->unexplained_since_s.reset();
-  impl_->jumped_at_s.reset();
   impl_->previous.reset();
-  impl_->before_jump.reset();
+  impl_->doubt.reset();
 }
 
 LocalizedScan Localizer::add_scan(const StampedScan& scan) { return impl_->add_scan(scan); }

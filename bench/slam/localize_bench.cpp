@@ -13,9 +13,15 @@
 //    unaware): the seconds until the pose is withdrawn or doubted (the scans jumped), and until it
 //    is found again, correctly.
 //
-//   localize_bench [--log FILE] [--relations FILE] [--time-offset S] [--map-s S] [--to-s S]
+//   localize_bench [--log FILE] [--relations FILE|none] [--truth FILE] [--time-offset S]
+//                  [--map-s S] [--to-s S]
 //                  [--starts N] [--only-starts K,L,...] [--kidnaps N] [--settle-s S]
 //
+// --truth FILE adds the true poses as a third reference ('t x y theta' per scan, in the log's
+// order, as ../shared/tools/perturb_carmen.py --truth writes them), each carried into the
+// session's frame by the correction of the mapped scan nearest to it.
+// --relations none skips the relation score (a log without Kummerle relations, such as a corrected
+// radish log perturbed by ../shared/tools/perturb_carmen.py).
 // --only-starts runs only those of the --starts starts (0-based: start K begins K/N of the way
 // through the span), to look again at a few of them. --to-s cuts the log (the smoke test in ctest
 // runs a short one; `make localize-bench` the whole).
@@ -29,6 +35,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,6 +73,16 @@ struct Offset {
   double deg = 0.0;
 };
 
+/// The poses of a 't x y theta' file, one per line.
+std::optional<std::vector<StampedPose2>> read_truth(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  std::vector<StampedPose2> poses;
+  StampedPose2 p;
+  while (in >> p.t_s >> p.pose.x >> p.pose.y >> p.pose.theta) poses.push_back(p);
+  return poses;
+}
+
 Offset offset(const Pose2& a, const Pose2& b) {
   const Pose2 e = between(b, a);
   return {std::hypot(e.x, e.y), rad_to_deg(std::abs(normalize_angle(e.theta)))};
@@ -74,6 +91,7 @@ Offset offset(const Pose2& a, const Pose2& b) {
 int run(int argc, char** argv) {
   std::filesystem::path log_path = data_dir() / "laser/intel/intel-raw-first5505-sot.clf";
   std::filesystem::path relations_path = data_dir() / "laser/intel/intel.relations";
+  std::filesystem::path truth_path;
   double time_offset_s = 976052857.337284;
   double map_s = 600.0;
   double to_s = 0.0;  // 0: the whole log
@@ -88,6 +106,8 @@ int run(int argc, char** argv) {
       log_path = value;
     } else if (arg == "--relations") {
       relations_path = value;
+    } else if (arg == "--truth") {
+      truth_path = value;
     } else if (arg == "--time-offset") {
       time_offset_s = std::atof(value);
     } else if (arg == "--to-s") {
@@ -126,10 +146,21 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", log.error().message.c_str());
     return 3;
   }
-  Result<std::vector<Relation>> relations = read_relations(relations_path);
+  Result<std::vector<Relation>> relations =
+      relations_path == "none" ? std::vector<Relation>{} : read_relations(relations_path);
   if (!relations) {
     std::fprintf(stderr, "%s\n", relations.error().message.c_str());
     return 3;
+  }
+  std::vector<StampedPose2> truth;
+  if (!truth_path.empty()) {
+    auto t = read_truth(truth_path);
+    if (!t || t->size() != log->scans.size()) {
+      std::fprintf(stderr, "%s: expected one 't x y theta' line per scan of the log (%zu)\n",
+                   truth_path.c_str(), log->scans.size());
+      return 3;
+    }
+    truth = std::move(*t);
   }
   if (to_s > 0.0) {
     const double first_s = log->scans.front().t_s;
@@ -161,6 +192,39 @@ int run(int argc, char** argv) {
   const auto slam_reference = [&](std::size_t rest_index) {
     return T_session_full * full->trajectory[split + rest_index].pose;
   };
+  // The true poses in the session's frame (when given). The session's map is bent where its SLAM
+  // erred, so one rigid motion does not carry the truth into it; each true pose is carried by the
+  // correction of the mapped scan nearest to it (T_session_truth at that scan: its session pose
+  // times its true pose's inverse), which holds within the error of the map there.
+  std::vector<Pose2> truth_in_session;  // per scan of the rest
+  std::vector<double> truth_carried_m;  // how far from its nearest mapped scan
+  if (!truth.empty()) {
+    double rigid_worst_m = 0.0;
+    const Pose2 T_rigid = align(session->trajectory, truth);
+    for (std::size_t j = 0; j < session->trajectory.size(); ++j) {
+      rigid_worst_m =
+          std::max(rigid_worst_m, offset(session->trajectory[j].pose, T_rigid * truth[j].pose).m);
+    }
+    double nearest_worst_m = 0.0;
+    for (std::size_t i = split; i < truth.size(); ++i) {
+      std::size_t nearest = 0;
+      double nearest_m = INFINITY;
+      for (std::size_t j = 0; j < session->trajectory.size(); ++j) {
+        const double d_m = offset(truth[i].pose, truth[j].pose).m;
+        if (d_m < nearest_m) nearest_m = d_m, nearest = j;
+      }
+      nearest_worst_m = std::max(nearest_worst_m, nearest_m);
+      truth_carried_m.push_back(nearest_m);
+      const Pose2 T_session_truth =
+          session->trajectory[nearest].pose * truth[nearest].pose.inverse();
+      truth_in_session.push_back(T_session_truth * truth[i].pose);
+    }
+    std::printf(
+        "session: largest offset from the true poses rigidly aligned %.3f m; the true poses "
+        "carried "
+        "by the nearest mapped scan's correction, at most %.1f m from it\n",
+        rigid_worst_m, nearest_worst_m);
+  }
   slam::LocalizerOptions options;
   options.points = slam_options.points;
   const auto t_map = std::chrono::steady_clock::now();
@@ -178,6 +242,7 @@ int run(int argc, char** argv) {
     slam::Localizer localizer(map, options);
     std::vector<StampedPose2> trajectory;
     double worst_m = 0.0;
+    std::vector<bool> confident(rest.size(), false);
     const auto t_run = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < rest.size(); ++i) {
       const slam::LocalizedScan s = localizer.add_scan(rest[i]);
@@ -185,6 +250,7 @@ int run(int argc, char** argv) {
       trajectory.push_back({s.t_s, s.T_map_robot});
       map_share[i] = s.map_share;
       tracked[i] = s.T_map_robot;
+      confident[i] = s.confident;
       worst_m = std::max(worst_m, offset(s.T_map_robot, slam_reference(i)).m);
     }
     const double wall_s = seconds_since(t_run);
@@ -196,8 +262,37 @@ int run(int argc, char** argv) {
         st.tracked, st.scans, st.searches, st.ambiguous, st.losses, st.jumps, st.glitches, wall_s,
         data_s, data_s / wall_s, st.search_s);
     std::printf("tracking: largest offset from the whole log's SLAM run %.3f m\n", worst_m);
+    if (!truth_in_session.empty()) {
+      // The tracked run against the truth, where the truth is carried from a mapped scan within
+      // 2 m: its confident scans further off than 0.1 m / 3 deg, by runs of consecutive ones.
+      int judged = 0, off = 0;
+      std::optional<std::size_t> run_from;
+      double run_worst_m = 0.0;
+      for (std::size_t i = 0; i <= rest.size(); ++i) {
+        bool off_here = false;
+        if (i < rest.size() && confident[i] && truth_carried_m[i] <= 2.0) {
+          ++judged;
+          const Offset e = offset(*tracked[i], truth_in_session[i]);
+          off_here = e.m > 0.1 || e.deg > 3.0;
+          if (off_here) run_worst_m = std::max(run_worst_m, e.m);
+        }
+        if (off_here) {
+          ++off;
+          if (!run_from) run_from = i;
+        } else if (run_from && (i == rest.size() || confident[i])) {
+          std::printf("tracking: confident and off the truth %.1f-%.1f s (up to %.2f m)\n",
+                      rest[*run_from].t_s - t0, rest[i - 1].t_s - t0, run_worst_m);
+          run_from.reset();
+          run_worst_m = 0.0;
+        }
+      }
+      std::printf(
+          "tracking: %d of %d confident scans near the map further than 0.1 m / 3 deg from the "
+          "truth\n",
+          off, judged);
+    }
     Result<RelationMetric> m = relation_metric(trajectory, *relations, time_offset_s);
-    if (m) {
+    if (!relations->empty() && m) {
       std::printf("tracking: relations %zu  trans %.4f +- %.4f m  rot %.3f +- %.3f deg\n", m->count,
                   m->trans_mean_m, m->trans_std_m, rad_to_deg(m->rot_mean_rad),
                   rad_to_deg(m->rot_std_rad));
@@ -215,17 +310,30 @@ int run(int argc, char** argv) {
   };
   struct Verdict {
     Offset tracked, slam;
+    std::optional<Offset> truth;
     [[nodiscard]] static bool near(const Offset& e) { return e.m <= 0.1 && e.deg <= 3.0; }
-    [[nodiscard]] bool right() const { return near(tracked) || near(slam); }
+    [[nodiscard]] bool right() const {
+      return near(tracked) || near(slam) || (truth && near(*truth));
+    }
   };
   const auto verdict = [&](const Pose2& T_map_robot, std::size_t rest_index) {
-    return Verdict{offset(T_map_robot, reference(rest_index)),
-                   offset(T_map_robot, slam_reference(rest_index))};
+    Verdict v{offset(T_map_robot, reference(rest_index)),
+              offset(T_map_robot, slam_reference(rest_index)), std::nullopt};
+    if (!truth_in_session.empty()) v.truth = offset(T_map_robot, truth_in_session[rest_index]);
+    return v;
   };
-  int off_tracked = 0, off_slam = 0;  // confident poses off by one reference alone
+  // Confident poses off by one reference alone.
+  int off_tracked = 0, off_slam = 0, off_truth = 0;
   const auto count_off = [&](const Verdict& v) {
     off_tracked += Verdict::near(v.tracked) ? 0 : 1;
     off_slam += Verdict::near(v.slam) ? 0 : 1;
+    off_truth += v.truth && !Verdict::near(*v.truth) ? 1 : 0;
+  };
+  const auto truth_text = [](const Verdict& v) {
+    char text[64] = "";
+    if (v.truth)
+      std::snprintf(text, sizeof text, ", the truth: %.2f m / %.1f deg", v.truth->m, v.truth->deg);
+    return std::string(text);
   };
 
   // Relocalization from start times spread over the rest.
@@ -261,9 +369,9 @@ int run(int argc, char** argv) {
         wrong_here = true;
         std::printf(
             "  start %.1f s: confident pose %.2f m / %.1f deg off (the SLAM run: %.2f m / %.1f "
-            "deg) at +%.1f s (fit %.2f, on the map %.0f %%)\n",
-            rest[first].t_s - t0, v.tracked.m, v.tracked.deg, v.slam.m, v.slam.deg, after_s,
-            s.map_fit, 100.0 * s.map_share);
+            "deg%s) at +%.1f s (fit %.2f, on the map %.0f %%)\n",
+            rest[first].t_s - t0, v.tracked.m, v.tracked.deg, v.slam.m, v.slam.deg,
+            truth_text(v).c_str(), after_s, s.map_fit, 100.0 * s.map_share);
       }
       if (!found_after_s) found_after_s = after_s;
     }
@@ -271,13 +379,13 @@ int run(int argc, char** argv) {
     const slam::LocalizerStats& st = localizer.stats();
     std::printf(
         "  start %.1f s: confident pose after %.1f s; map share %.2f; first pose after %.1f s, "
-        "%.2f m / %.1f deg off (the SLAM run: %.2f m / %.1f deg), map share %.2f; searches %d: "
-        "no match %d, unfit %d, see through %d, ambiguous %d, unconfirmed %d, newest scan alone "
-        "%d\n",
+        "%.2f m / %.1f deg off (the SLAM run: %.2f m / %.1f deg%s), map share %.2f; searches "
+        "%d: no match %d, unfit %d, see through %d, ambiguous %d, unconfirmed %d, newest scan "
+        "alone %d\n",
         rest[first].t_s - t0, found_after_s.value_or(NAN), map_share[first],
         posed_after_s.value_or(NAN), posed.tracked.m, posed.tracked.deg, posed.slam.m,
-        posed.slam.deg, posed_share, st.searches, st.no_match, st.unfit, st.see_through,
-        st.ambiguous, st.unconfirmed, st.newest_scan_only);
+        posed.slam.deg, truth_text(posed).c_str(), posed_share, st.searches, st.no_match, st.unfit,
+        st.see_through, st.ambiguous, st.unconfirmed, st.newest_scan_only);
     if (found_after_s && !wrong_here && *found_after_s <= 5.0) ++found;
     times.push_back(found_after_s.value_or(INFINITY));
   }
@@ -324,9 +432,9 @@ int run(int argc, char** argv) {
         if (!wrong_here) {
           std::printf(
               "  kidnap to %.0f s: confident pose %.2f m / %.1f deg off (the SLAM run: %.2f m / "
-              "%.1f deg) at +%.1f s (fit %.2f, on the map %.0f %%)\n",
-              rest[b].t_s - t0, v.tracked.m, v.tracked.deg, v.slam.m, v.slam.deg, after_s,
-              s.map_fit, 100.0 * s.map_share);
+              "%.1f deg%s) at +%.1f s (fit %.2f, on the map %.0f %%)\n",
+              rest[b].t_s - t0, v.tracked.m, v.tracked.deg, v.slam.m, v.slam.deg,
+              truth_text(v).c_str(), after_s, s.map_fit, 100.0 * s.map_share);
         }
         wrong_here = true;
       }
@@ -345,6 +453,7 @@ int run(int argc, char** argv) {
       "confident poses of the relocalized and kidnapped runs further than 0.1 m / 3 deg from the "
       "tracked run alone: %d; from the whole log's SLAM run alone: %d\n",
       off_tracked, off_slam);
+  if (!truth_in_session.empty()) std::printf("... from the true poses alone: %d\n", off_truth);
   return 0;
 }
 

@@ -67,6 +67,9 @@ std::optional<std::string> validate(const LocalizerOptions& o) {
   if (!(o.min_tracking_score > kMinProbability && o.min_tracking_score < kMaxProbability)) {
     return "min_tracking_score must be in (0.1, 0.9)";
   }
+  if (!(o.min_confident_fit >= o.min_tracking_score && o.min_confident_fit < kMaxProbability)) {
+    return "min_confident_fit must be in [min_tracking_score, 0.9)";
+  }
   if (!(o.min_map_share > 0.0 && o.min_map_share <= 1.0)) return "min_map_share must be in (0, 1]";
   if (!(o.lost_after_s >= 0.0)) return "lost_after_s must be >= 0";
   if (!(o.min_scan_agreement >= 0.0 && o.min_scan_agreement <= 1.0)) {
@@ -552,7 +555,7 @@ struct Localizer::Impl {
     // map is placed by the rest as surely (unknown points would drag the mean down to 0.1).
     out.confident = out.state != LocalizationState::kLost && !unexplained_since_s && !doubt &&
                     out.map_share >= options.min_map_share &&
-                    out.map_fit >= options.min_tracking_score;
+                    out.map_fit >= options.min_confident_fit;
     if (pose && !points.returns_m.empty()) {
       previous = Previous{std::move(points), *pose, std::abs(scan.scan.angle_increment_rad)};
     } else if (!pose) {

@@ -185,6 +185,7 @@ int LocalizeCommand::write_outputs(const std::vector<slam::LocalizedScan>& scans
                             {"losses", st.losses},
                             {"jumps", st.jumps},
                             {"glitches", st.glitches},
+                            {"strays", st.strays},
                             {"tracking_wall_s", st.tracking_s},
                             {"search_wall_s", st.search_s}};
   if (metric) report["relations"] = relations_report(*metric, {})["relations"];

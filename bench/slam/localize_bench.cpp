@@ -258,9 +258,9 @@ int run(int argc, char** argv) {
     const slam::LocalizerStats& st = localizer.stats();
     std::printf(
         "tracking: %d of %d scans localized, %d searches (%d ambiguous), %d losses, %d jumps "
-        "(%d glitches); %.2f s for %.0f s of data (%.0fx real time; search %.2f s)\n",
-        st.tracked, st.scans, st.searches, st.ambiguous, st.losses, st.jumps, st.glitches, wall_s,
-        data_s, data_s / wall_s, st.search_s);
+        "(%d glitches), %d strays; %.2f s for %.0f s of data (%.0fx real time; search %.2f s)\n",
+        st.tracked, st.scans, st.searches, st.ambiguous, st.losses, st.jumps, st.glitches,
+        st.strays, wall_s, data_s, data_s / wall_s, st.search_s);
     std::printf("tracking: largest offset from the whole log's SLAM run %.3f m\n", worst_m);
     if (!truth_in_session.empty()) {
       // The tracked run against the truth, where the truth is carried from a mapped scan within

@@ -77,6 +77,7 @@ std::optional<std::string> validate(const LocalizerOptions& o) {
   }
   if (o.min_scan_compared < 1) return "min_scan_compared must be >= 1";
   if (!(o.max_glitch_s >= 0.0)) return "max_glitch_s must be >= 0";
+  if (!(o.max_untrusted_travel_m > 0.0)) return "max_untrusted_travel_m must be > 0";
   if (!(o.scan_agreement.agreement_m >= 0.0) || !(o.scan_agreement.agreement_share >= 0.0)) {
     return "scan_agreement must be >= 0";
   }
@@ -170,14 +171,18 @@ struct Localizer::Impl {
     double beam_rad = 0.0;
   };
   std::optional<Previous> previous;
-  /// The scans jumped (a kidnapping?) at since_s and no global search has placed the robot since:
-  /// the tracked pose is not trusted, and searches run as if lost. before_jump is the last scan
-  /// before the jump while a scan agreeing with it again would show a glitch (max_glitch_s).
+  /// The scans jumped (a kidnapping?) at since_s, or the pose strayed (max_untrusted_travel_m),
+  /// and no global search has placed the robot since: the tracked pose is not trusted, and
+  /// searches run as if lost (a stray's only while its scans see the map). before_jump is the
+  /// last scan before a jump while a scan agreeing with it again would show a glitch
+  /// (max_glitch_s).
   struct Doubt {
     double since_s = 0.0;
     std::optional<Previous> before_jump;
+    bool strayed = false;
   };
   std::optional<Doubt> doubt;
+  double untrusted_travel_m = 0.0;            // odometry travel since the last confident scan
   std::deque<ViewScan> view;                  // the scans since tracking failed (view_s of them)
   ProbabilityGrid view_grid;                  // the view's scans at their view poses
   std::optional<double> last_search_s;
@@ -505,7 +510,11 @@ struct Localizer::Impl {
         // The scans jumped. The view and the searches start again from this scan: the earlier
         // ones saw elsewhere. The doubt dates from the first jump, and so does its glitch window.
         ++stats.jumps;
-        if (!doubt) doubt = Doubt{scan.t_s, previous};
+        if (!doubt) {
+          doubt = Doubt{scan.t_s, previous};
+        } else {
+          doubt->strayed = false;  // searched wherever the robot now is, map in view or not
+        }
         view.clear();
         candidate.reset();
         last_search_s.reset();
@@ -537,7 +546,11 @@ struct Localizer::Impl {
     if (!pose || unexplained_since_s || doubt) {
       add_to_view(scan.t_s, scan.odometry, points);
     }
-    if ((!pose || doubt) && !view.empty() && search_due(scan)) {
+    // A stray's view is searched only while its scans see the map: beyond it every search finds
+    // nothing, at the cost of a search over the whole map.
+    const bool searchable =
+        !pose || (doubt && (!doubt->strayed || out.map_share >= options.min_map_share));
+    if (searchable && !view.empty() && search_due(scan)) {
       last_search_s = scan.t_s;
       odometry_at_last_search = scan.odometry;
       relocalize(out);
@@ -556,6 +569,17 @@ struct Localizer::Impl {
     out.confident = out.state != LocalizationState::kLost && !unexplained_since_s && !doubt &&
                     out.map_share >= options.min_map_share &&
                     out.map_fit >= options.min_confident_fit;
+    if (out.confident || !pose) {
+      untrusted_travel_m = 0.0;
+    } else if (!doubt) {
+      untrusted_travel_m += std::hypot(increment.x, increment.y);
+      if (untrusted_travel_m > options.max_untrusted_travel_m) {
+        // Carried too far on odometry and loose fits to be trusted again without a search.
+        ++stats.strays;
+        doubt = Doubt{scan.t_s, std::nullopt, true};
+        untrusted_travel_m = 0.0;
+      }
+    }
     if (pose && !points.returns_m.empty()) {
       previous = Previous{std::move(points), *pose, std::abs(scan.scan.angle_increment_rad)};
     } else if (!pose) {
@@ -580,6 +604,7 @@ void Localizer::set_pose(const Pose2& T_map_robot) {
   impl_->unexplained_since_s.reset();
   impl_->previous.reset();
   impl_->doubt.reset();
+  impl_->untrusted_travel_m = 0.0;
 }
 
 LocalizedScan Localizer::add_scan(const StampedScan& scan) { return impl_->add_scan(scan); }

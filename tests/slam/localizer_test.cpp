@@ -272,6 +272,56 @@ TEST(Localizer, OneBadScanIsAGlitchNotAKidnapping) {
   EXPECT_EQ(localizer.stats().losses, 0);
 }
 
+/// Runs the localizer from the true start over the run, the sensor blind (no returns) from scan
+/// kBlindFrom until the robot has driven `blind_m`: odometry alone carries the pose. Returns the
+/// answers from the first scan after the blind stretch on, and the stats.
+struct AfterBlindStretch {
+  std::vector<LocalizedScan> answers;
+  LocalizerStats stats;
+};
+AfterBlindStretch after_blind_stretch(const LocalizerOptions& options, double blind_m) {
+  const SimulatedLaserRun run = office_run(11, 40.0);
+  Localizer localizer(office_map(), options);
+  localizer.set_pose(run.truth.front().pose);
+  constexpr std::size_t kBlindFrom = 20;
+  double driven_m = 0.0;
+  AfterBlindStretch out;
+  for (std::size_t i = 0; i < run.log.scans.size(); ++i) {
+    StampedScan scan = run.log.scans[i];
+    const bool blind = i >= kBlindFrom && driven_m < blind_m;
+    if (i > kBlindFrom) {
+      driven_m += (run.truth[i].pose.translation() - run.truth[i - 1].pose.translation()).norm();
+    }
+    if (blind)
+      std::fill(scan.scan.ranges_m.begin(), scan.scan.ranges_m.end(), scan.scan.max_range_m);
+    const LocalizedScan s = localizer.add_scan(scan);
+    if (i >= kBlindFrom && !blind) out.answers.push_back(s);
+  }
+  out.stats = localizer.stats();
+  return out;
+}
+
+TEST(Localizer, APoseCarriedFarWithoutTheMapIsConfirmedBySearchBeforeItIsTrusted) {
+  // Odometry carried the pose 3 m with no return from the map: when the scans come back, the
+  // pose may fit a look-alike place (ACES: 2.8 m along a corridor, decision 0043), so it is
+  // trusted again only once a global search has placed the robot; carried 1 m, at once.
+  const LocalizerOptions options;
+  const AfterBlindStretch far = after_blind_stretch(options, 3.0);
+  ASSERT_FALSE(far.answers.empty());
+  EXPECT_EQ(far.stats.strays, 1);
+  const auto first_trusted = std::find_if(far.answers.begin(), far.answers.end(),
+                                          [](const LocalizedScan& s) { return s.confident; });
+  ASSERT_NE(first_trusted, far.answers.end());
+  EXPECT_EQ(first_trusted->state, LocalizationState::kRelocalized);
+  EXPECT_FALSE(far.answers.front().confident);
+
+  const AfterBlindStretch near = after_blind_stretch(options, 1.0);
+  ASSERT_FALSE(near.answers.empty());
+  EXPECT_EQ(near.stats.strays, 0);
+  EXPECT_TRUE(near.answers.front().confident);
+  EXPECT_EQ(near.stats.searches, 0);
+}
+
 TEST(Localizer, ASymmetricRoomIsNeverClaimed) {
   // A bare rectangle looks the same turned by half a turn: two places explain every scan, so no
   // search may accept one.
@@ -497,6 +547,9 @@ TEST(Localizer, OptionsOutsideTheirRangeAreNamed) {
   o = {};
   o.min_tracking_score = 0.95;
   EXPECT_EQ(validate(o).value_or(""), "min_tracking_score must be in (0.1, 0.9)");
+  o = {};
+  o.max_untrusted_travel_m = 0.0;
+  EXPECT_EQ(validate(o).value_or(""), "max_untrusted_travel_m must be > 0");
   o = {};
   o.min_confident_fit = 0.45;
   EXPECT_EQ(validate(o).value_or(""), "min_confident_fit must be in [min_tracking_score, 0.9)");

@@ -82,6 +82,14 @@ struct LocalizerOptions {
   /// jump) was a glitch: a bad scan, or something passing close to the sensor, not a kidnapping;
   /// the doubt ends. After a kidnapping the scans see another place and never agree with it.
   double max_glitch_s = 1.0;
+  /// A pose carried for max_untrusted_travel_m of odometry travel without a confident scan (beyond
+  /// the map, or where it fits the map only loosely) is a guess: odometry drifts by metres over
+  /// tens of metres, and a corridor fits the scans as well a few doors along. It is doubted like a
+  /// jump: not trusted again until a global search confirms it or places the robot elsewhere,
+  /// searched once the scans see the map again (at least min_map_share of a scan on it). On
+  /// ACES a pose that came back onto the map 2.8 m along a corridor fitted it at 0.61-0.83
+  /// (decision 0043).
+  double max_untrusted_travel_m = 2.0;
 
   /// Relocalization: the view searched is the scans of the last view_s seconds (since tracking
   /// failed), joined by matching each against the earlier ones (a small local SLAM, inserted as
@@ -192,6 +200,7 @@ struct LocalizerStats {
   int losses = 0;           // times tracking was lost after having a pose
   int jumps = 0;            // scans that disagreed with the one before (the pose is doubted)
   int glitches = 0;         // jumps undone within max_glitch_s (the doubt ended)
+  int strays = 0;           // poses doubted after max_untrusted_travel_m without a confident scan
   double tracking_s = 0.0;  // wall time of tracking
   double search_s = 0.0;    // wall time of global searches
 };

@@ -115,6 +115,22 @@ localize-bench-fr079: build
 	build/dev/bench/slam/localize_bench --log $(FR079)/freiburg-079-corrected.log \
 	  --relations $(FR079)/fr079.relations --time-offset 1211.467 --map-s 530
 
+# And on two corrected radish logs with known true poses (ACES, FHW: one scan a metre, so made
+# drifting and 0.2 s apart by the shared perturb_carmen.py, seed 1, 0.15 deg/m, as the SLAM table
+# does): map 0-44 s, localize the rest, every pose judged against the truth too (about 30 and
+# 10 minutes; docs/localization.md, "Corrected logs with true poses").
+RADISH = $${TESSERA_DATA_DIR:-../shared/data}/maps/radish_carmen
+TOOLS = $${TESSERA_DATA_DIR:-../shared/data}/../tools
+.PHONY: localize-bench-radish
+localize-bench-radish: build
+	mkdir -p out/localize-radish
+	for n in aces fhw; do \
+	  gzip -dc $(RADISH)/$$n-corrected.log.gz > out/localize-radish/$$n.log && \
+	  python3 $(TOOLS)/perturb_carmen.py out/localize-radish/$$n.log out/localize-radish/$$n-drift.log \
+	    --seed 1 --restamp 0.2 --drift-deg-per-m 0.15 --truth out/localize-radish/$$n-truth.txt && \
+	  build/dev/bench/slam/localize_bench --log out/localize-radish/$$n-drift.log --relations none \
+	    --truth out/localize-radish/$$n-truth.txt --map-s 44 || exit 1; done
+
 # Issue 16's bounded lifelong mapping: the Intel log mapped, then resumed five times over the same
 # session; nodes, peak memory, file size and relations per pass (docs/sessions.md).
 .PHONY: lifelong

@@ -206,7 +206,7 @@ int run(int argc, char** argv) {
           std::max(rigid_worst_m, offset(session->trajectory[j].pose, T_rigid * truth[j].pose).m);
     }
     double nearest_worst_m = 0.0;
-    for (std::size_t i = split; i < truth.size(); ++i) {
+    for (std::size_t i = split; i < all.size(); ++i) {
       std::size_t nearest = 0;
       double nearest_m = INFINITY;
       for (std::size_t j = 0; j < session->trajectory.size(); ++j) {
@@ -221,8 +221,7 @@ int run(int argc, char** argv) {
     }
     std::printf(
         "session: largest offset from the true poses rigidly aligned %.3f m; the true poses "
-        "carried "
-        "by the nearest mapped scan's correction, at most %.1f m from it\n",
+        "carried by the nearest mapped scan's correction, at most %.1f m from it\n",
         rigid_worst_m, nearest_worst_m);
   }
   slam::LocalizerOptions options;
@@ -331,8 +330,9 @@ int run(int argc, char** argv) {
   };
   const auto truth_text = [](const Verdict& v) {
     char text[64] = "";
-    if (v.truth)
+    if (v.truth) {
       std::snprintf(text, sizeof text, ", the truth: %.2f m / %.1f deg", v.truth->m, v.truth->deg);
+    }
     return std::string(text);
   };
 

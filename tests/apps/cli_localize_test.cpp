@@ -53,6 +53,9 @@ TEST(CliLocalize, FindsTheRobotInASavedSessionWithNoInitialPose) {
   const nlohmann::json& loc = report["localization"];
   EXPECT_LE(loc["first_pose_after_s"].get<double>(), 5.0);
   EXPECT_GE(loc["localized_scans"].get<double>(), 0.8 * loc["scans"].get<double>());
+  // Where the session mapped, the scans neither jump nor leave the pose untrusted for metres.
+  EXPECT_EQ(loc["jumps"], 0);
+  EXPECT_EQ(loc["strays"], 0);
   EXPECT_TRUE(std::filesystem::exists(out.path() / "localization.png"));
 
   // Every localized pose is where the session's own SLAM put the robot at that stamp.

@@ -292,8 +292,9 @@ AfterBlindStretch after_blind_stretch(const LocalizerOptions& options, double bl
     if (i > kBlindFrom) {
       driven_m += (run.truth[i].pose.translation() - run.truth[i - 1].pose.translation()).norm();
     }
-    if (blind)
+    if (blind) {
       std::fill(scan.scan.ranges_m.begin(), scan.scan.ranges_m.end(), scan.scan.max_range_m);
+    }
     const LocalizedScan s = localizer.add_scan(scan);
     if (i >= kBlindFrom && !blind) out.answers.push_back(s);
   }

@@ -256,16 +256,19 @@ int run(int argc, char** argv) {
     const double data_s = rest.back().t_s - rest.front().t_s;
     const slam::LocalizerStats& st = localizer.stats();
     std::printf(
-        "tracking: %d of %d scans localized, %d searches (%d ambiguous), %d losses, %d jumps "
-        "(%d glitches), %d strays; %.2f s for %.0f s of data (%.0fx real time; search %.2f s)\n",
-        st.tracked, st.scans, st.searches, st.ambiguous, st.losses, st.jumps, st.glitches,
-        st.strays, wall_s, data_s, data_s / wall_s, st.search_s);
+        "tracking: %d of %d scans localized, %d searches (%d ambiguous, %d no match, %d unfit, %d "
+        "see through), %d losses, %d jumps (%d glitches), %d strays; %.2f s for %.0f s of data "
+        "(%.1fx real time; search %.2f s)\n",
+        st.tracked, st.scans, st.searches, st.ambiguous, st.no_match, st.unfit, st.see_through,
+        st.losses, st.jumps, st.glitches, st.strays, wall_s, data_s, data_s / wall_s, st.search_s);
     std::printf("tracking: largest offset from the whole log's SLAM run %.3f m\n", worst_m);
     if (!truth_in_session.empty()) {
       // The tracked run against the truth, where the truth is carried from a mapped scan within
       // 2 m: its confident scans further off than 0.1 m / 3 deg, by runs of consecutive ones.
       int judged = 0, off = 0;
-      std::optional<std::size_t> run_from;
+      bool in_run =
+          false;  // (an index and a flag: gcc 12 warns of an optional's uninitialized use)
+      std::size_t run_from = 0;
       double run_worst_m = 0.0;
       for (std::size_t i = 0; i <= rest.size(); ++i) {
         bool off_here = false;
@@ -277,11 +280,12 @@ int run(int argc, char** argv) {
         }
         if (off_here) {
           ++off;
-          if (!run_from) run_from = i;
-        } else if (run_from && (i == rest.size() || confident[i])) {
+          if (!in_run) run_from = i;
+          in_run = true;
+        } else if (in_run && (i == rest.size() || confident[i])) {
           std::printf("tracking: confident and off the truth %.1f-%.1f s (up to %.2f m)\n",
-                      rest[*run_from].t_s - t0, rest[i - 1].t_s - t0, run_worst_m);
-          run_from.reset();
+                      rest[run_from].t_s - t0, rest[i - 1].t_s - t0, run_worst_m);
+          in_run = false;
           run_worst_m = 0.0;
         }
       }

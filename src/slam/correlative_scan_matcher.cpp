@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <span>
+#include <vector>
 
 #include "tessera/grid/grid_geometry.hpp"
 
@@ -163,7 +165,22 @@ double score_of(long sum, std::size_t points) {
                                (255.0 * static_cast<double>(points));
 }
 
+/// The largest sum that does not reach min_score: a candidate must beat it.
+long sum_bound(double min_score, std::size_t points) {
+  const double q = (min_score - kMinProbability) / (kMaxProbability - kMinProbability) * 255.0 *
+                   static_cast<double>(points);
+  if (q <= 0.0) return -1;
+  return static_cast<long>(std::ceil(q - 1e-9)) - 1;
+}
+
 }  // namespace
+
+bool ExcludedPoses::contains(const Pose2& pose) const {
+  return std::any_of(around.begin(), around.end(), [&](const Pose2& p) {
+    return std::hypot(pose.x - p.x, pose.y - p.y) <= linear_m &&
+           std::abs(normalize_angle(pose.theta - p.theta)) <= angular_rad;
+  });
+}
 
 BranchAndBoundMatcher::BranchAndBoundMatcher(const ProbabilityGrid& grid, int depth,
                                              double unknown_probability)
@@ -288,18 +305,32 @@ struct BranchAndBoundMatcher::Search {
   /// True for a full-resolution candidate among the excluded poses.
   [[nodiscard]] bool is_excluded(const Candidate& c) const {
     if (!excluded) return false;
-    const double res = matcher.geometry_.resolution_m();
-    const double x = prior.x + c.x * res, y = prior.y + c.y * res;
-    const double theta = prior.theta + angles[static_cast<std::size_t>(c.angle)];
-    return std::any_of(excluded->around.begin(), excluded->around.end(), [&](const Pose2& p) {
-      return std::hypot(x - p.x, y - p.y) <= excluded->linear_m &&
-             std::abs(normalize_angle(theta - p.theta)) <= excluded->angular_rad;
-    });
+    return excluded->contains(pose_of(c));
   }
 
   static void sort(std::span<Candidate> candidates) {
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const Candidate& a, const Candidate& b) { return a.sum > b.sum; });
+  }
+
+  /// The (at most four) children of a candidate at `level`, scored one level down and sorted best
+  /// first by insertion (stable: ties keep their order); on the caller's stack, since the search
+  /// visits many nodes and must not allocate for each. Returns how many.
+  std::size_t split(int level, const Candidate& c, std::array<Candidate, 4>& children) const {
+    const int half = 1 << (level - 1);
+    std::size_t n = 0;
+    for (const int dx : {0, half}) {
+      if (c.x + dx > n_lin) break;
+      for (const int dy : {0, half}) {
+        if (c.y + dy > n_lin) break;
+        Candidate child{c.angle, c.x + dx, c.y + dy, 0};
+        child.sum = score(level - 1, child);
+        std::size_t i = n++;
+        for (; i > 0 && children[i - 1].sum < child.sum; --i) children[i] = children[i - 1];
+        children[i] = child;
+      }
+    }
+    return n;
   }
 
   /// Hess et al. 2016, Algorithm 3 (depth-first, best child first): the best candidate below
@@ -313,22 +344,8 @@ struct BranchAndBoundMatcher::Search {
         if (is_excluded(c)) continue;
         return c;
       }
-      const int half = 1 << (level - 1);
-      // At most four children, sorted best first by insertion (stable: ties keep their order),
-      // on the stack: the search visits many nodes and must not allocate for each.
       std::array<Candidate, 4> children;
-      std::size_t n = 0;
-      for (const int dx : {0, half}) {
-        if (c.x + dx > n_lin) break;
-        for (const int dy : {0, half}) {
-          if (c.y + dy > n_lin) break;
-          Candidate child{c.angle, c.x + dx, c.y + dy, 0};
-          child.sum = score(level - 1, child);
-          std::size_t i = n++;
-          for (; i > 0 && children[i - 1].sum < child.sum; --i) children[i] = children[i - 1];
-          children[i] = child;
-        }
-      }
+      const std::size_t n = split(level, c, children);
       if (std::optional<Candidate> r =
               branch(level - 1, std::span<const Candidate>(children.data(), n), bound)) {
         best = r;
@@ -338,30 +355,147 @@ struct BranchAndBoundMatcher::Search {
     return best;
   }
 
-  [[nodiscard]] ScanMatch to_match(const Candidate& c, std::size_t points) const {
+  /// A candidate of match_ranked's search with its place in branch()'s order: leaves that
+  /// branch() meets earlier have smaller keys (the poses around the prior first, then each root's
+  /// index among the sorted roots followed by the ranks among siblings, two bits a level).
+  struct Keyed {
+    Candidate c;
+    int level = 0;
+    std::uint64_t key = 0;
+  };
+  static constexpr std::uint64_t kFirstRootKey = std::uint64_t{1} << 20;
+
+  /// match_ranked's state: the best sum so far (above `best_bound`), every leaf met above the
+  /// rival bound, and up to `places` leaves met so far that lie twice `distinct` apart (`apart`):
+  /// an exclusion of `distinct` around a place holds for at most one of them, so each of the
+  /// first `places` places scores at least the lowest of them, and the bound rises to it.
+  struct Ranking {
+    Rivals rivals;
+    std::size_t points = 0;
+    long best_bound = 0;  // the best must beat this sum (min_score)
+    long bound = 0;       // a contender must beat this sum
+    std::optional<long> best_sum;
+    std::vector<Keyed> leaves;
+    ExcludedPoses apart;
+    std::vector<std::pair<long, Pose2>> tops;  // sums and poses, pairwise apart
+
+    void meet(const Keyed& leaf, const Pose2& pose) {
+      const long sum = leaf.c.sum;
+      if (sum <= bound) return;
+      leaves.push_back(leaf);
+      if (sum > best_bound && (!best_sum || sum > *best_sum)) {
+        best_sum = sum;
+        bound = std::max(bound,
+                         std::min(sum_bound(rivals.score(score_of(sum, points)), points), sum - 1));
+      }
+      keep_apart(sum, pose);
+    }
+
+    void keep_apart(long sum, const Pose2& pose) {
+      if (rivals.places <= 0) return;  // no place asked for: only the rival score bounds
+      std::size_t near = 0, near_count = 0;
+      for (std::size_t i = 0; i < tops.size(); ++i) {
+        apart.around = {tops[i].second};
+        if (apart.contains(pose)) {
+          near = i;
+          ++near_count;
+        }
+      }
+      const auto by_sum = [](const auto& a, const auto& b) { return a.first < b.first; };
+      if (near_count == 0 && tops.size() < static_cast<std::size_t>(rivals.places)) {
+        tops.emplace_back(sum, pose);
+      } else if (near_count == 0 &&
+                 sum > std::min_element(tops.begin(), tops.end(), by_sum)->first) {
+        *std::min_element(tops.begin(), tops.end(), by_sum) = {sum, pose};
+      } else if (near_count == 1 && sum > tops[near].first) {
+        tops[near] = {sum, pose};
+      } else {
+        return;
+      }
+      if (tops.size() == static_cast<std::size_t>(rivals.places)) {
+        // Ties with the lowest stay: the search's order decides among equal sums.
+        bound = std::max(bound, std::min_element(tops.begin(), tops.end(), by_sum)->first - 1);
+      }
+    }
+  };
+
+  /// match_ranked's search: branch()'s depth-first order, with the bound at min_score until a
+  /// best is found and at the rival bound after it. The candidates passed over before the best
+  /// was found that may still hold a rival are kept in `deferred` and searched after; the keys
+  /// put every leaf back in branch()'s order.
+  void rank(std::span<const Keyed> candidates, Ranking& r, std::vector<Keyed>& deferred) const {
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const Keyed& node = candidates[k];
+      if (node.c.sum <= r.bound) break;
+      if (!r.best_sum && node.c.sum <= r.best_bound) {
+        // No best yet, and none below here: these may hold rivals of one found later.
+        for (; k < candidates.size() && candidates[k].c.sum > r.bound; ++k) {
+          deferred.push_back(candidates[k]);
+        }
+        break;
+      }
+      if (node.level == 0) {
+        r.meet(node, pose_of(node.c));
+        continue;
+      }
+      std::array<Candidate, 4> children;
+      const std::size_t n = split(node.level, node.c, children);
+      std::array<Keyed, 4> keyed;
+      for (std::size_t i = 0; i < n; ++i) {
+        keyed[i] = {children[i], node.level - 1, (node.key << 2) | i};
+      }
+      rank(std::span<const Keyed>(keyed.data(), n), r, deferred);
+    }
+  }
+
+  /// The top level's candidates over the whole window, scored and sorted best first.
+  [[nodiscard]] std::vector<Candidate> roots() const {
+    const int top = matcher.depth() - 1;
+    const int step = 1 << top;
+    std::vector<Candidate> all;
+    for (int a = 0; a < static_cast<int>(angles.size()); ++a) {
+      for (int x = -n_lin; x <= n_lin; x += step) {
+        for (int y = -n_lin; y <= n_lin; y += step) {
+          Candidate c{a, x, y, 0};
+          c.sum = score(top, c);
+          all.push_back(c);
+        }
+      }
+    }
+    sort(all);
+    return all;
+  }
+
+  /// Calls f with each full-resolution candidate within kNearAngles angle steps and kNearCells
+  /// cells of the prior, scored, in a fixed order: scored before branch and bound, a good
+  /// estimate prunes the tree early.
+  template <class F>
+  void near_prior(F&& f) const {
+    constexpr int kNearAngles = 3;
+    constexpr int kNearCells = 2;
+    const int cells = std::min(kNearCells, n_lin);
+    for (int a = std::max(0, zero_angle - kNearAngles);
+         a <= std::min(static_cast<int>(angles.size()) - 1, zero_angle + kNearAngles); ++a) {
+      for (int x = -cells; x <= cells; ++x) {
+        for (int y = -cells; y <= cells; ++y) {
+          Candidate c{a, x, y, 0};
+          c.sum = score(0, c);
+          f(c);
+        }
+      }
+    }
+  }
+
+  [[nodiscard]] Pose2 pose_of(const Candidate& c) const {
     const double res = matcher.geometry_.resolution_m();
-    return {{prior.x + c.x * res, prior.y + c.y * res,
-             normalize_angle(prior.theta + angles[static_cast<std::size_t>(c.angle)])},
-            score_of(c.sum, points)};
+    return {prior.x + c.x * res, prior.y + c.y * res,
+            normalize_angle(prior.theta + angles[static_cast<std::size_t>(c.angle)])};
+  }
+
+  [[nodiscard]] ScanMatch to_match(const Candidate& c, std::size_t points) const {
+    return {pose_of(c), score_of(c.sum, points)};
   }
 };
-
-namespace {
-
-/// The neighbourhood of the prior scored before branch and bound: +-kNearAngles angle steps,
-/// +-kNearCells cells.
-constexpr int kNearAngles = 3;
-constexpr int kNearCells = 2;
-
-/// The largest sum that does not reach min_score: a candidate must beat it.
-long sum_bound(double min_score, std::size_t points) {
-  const double q = (min_score - kMinProbability) / (kMaxProbability - kMinProbability) * 255.0 *
-                   static_cast<double>(points);
-  if (q <= 0.0) return -1;
-  return static_cast<long>(std::ceil(q - 1e-9)) - 1;
-}
-
-}  // namespace
 
 std::optional<ScanMatch> BranchAndBoundMatcher::match(
     const Pose2& T_grid_robot_prior, const std::vector<Vec2>& points_robot,
@@ -369,43 +503,64 @@ std::optional<ScanMatch> BranchAndBoundMatcher::match(
     const std::optional<ExcludedPoses>& excluded) const {
   if (points_robot.empty()) return std::nullopt;
   const Search search(*this, T_grid_robot_prior, points_robot, window, excluded);
-  const int top = depth() - 1;
-  const int step = 1 << top;
-  std::vector<Search::Candidate> roots;
-  for (int a = 0; a < static_cast<int>(search.angles.size()); ++a) {
-    for (int x = -search.n_lin; x <= search.n_lin; x += step) {
-      for (int y = -search.n_lin; y <= search.n_lin; y += step) {
-        Search::Candidate c{a, x, y, 0};
-        c.sum = search.score(top, c);
-        roots.push_back(c);
-      }
-    }
-  }
-  Search::sort(roots);
+  const std::vector<Search::Candidate> roots = search.roots();
   // A good first answer makes the bound prune most of the tree: score the poses right around the
   // prior at full resolution first (the estimate is usually close). Branch and bound then only
   // looks for strictly better poses, so the result is still the window's best.
   long bound = sum_bound(min_score, points_robot.size());
   std::optional<Search::Candidate> best;
-  const int zero = search.zero_angle;
-  for (int a = std::max(0, zero - kNearAngles);
-       a <= std::min(static_cast<int>(search.angles.size()) - 1, zero + kNearAngles); ++a) {
-    for (int x = -std::min(kNearCells, search.n_lin); x <= std::min(kNearCells, search.n_lin);
-         ++x) {
-      for (int y = -std::min(kNearCells, search.n_lin); y <= std::min(kNearCells, search.n_lin);
-           ++y) {
-        Search::Candidate c{a, x, y, 0};
-        c.sum = search.score(0, c);
-        if (c.sum > bound && !search.is_excluded(c)) {
-          best = c;
-          bound = c.sum;
-        }
-      }
+  search.near_prior([&](const Search::Candidate& c) {
+    if (c.sum > bound && !search.is_excluded(c)) {
+      best = c;
+      bound = c.sum;
     }
+  });
+  if (std::optional<Search::Candidate> better = search.branch(depth() - 1, roots, bound)) {
+    best = better;
   }
-  if (std::optional<Search::Candidate> better = search.branch(top, roots, bound)) best = better;
   if (!best) return std::nullopt;
   return search.to_match(*best, points_robot.size());
+}
+
+std::optional<RankedMatches> BranchAndBoundMatcher::match_ranked(
+    const Pose2& T_grid_robot_prior, const std::vector<Vec2>& points_robot,
+    const SearchWindow& window, double min_score, const Rivals& rivals) const {
+  if (points_robot.empty()) return std::nullopt;
+  const std::size_t n = points_robot.size();
+  const Search search(*this, T_grid_robot_prior, points_robot, window, std::nullopt);
+  const std::vector<Search::Candidate> roots = search.roots();
+  Search::Ranking r;
+  r.rivals = rivals;
+  r.points = n;
+  r.best_bound = sum_bound(min_score, n);
+  // Until a best is found the rival bound is the lowest any best would set (a best scores at
+  // least min_score; one less for the rounding of sums): no rival of the final best is pruned.
+  r.bound = std::min(sum_bound(rivals.score(min_score), n) - 1, r.best_bound);
+  r.apart = {{}, 2.0 * rivals.distinct.linear_m, 2.0 * rivals.distinct.angular_rad};
+  std::uint64_t near_key = 0;
+  search.near_prior([&](const Search::Candidate& c) {
+    r.meet({c, 0, near_key++}, search.pose_of(c));
+  });
+  std::vector<Search::Keyed> keyed(roots.size());
+  for (std::size_t i = 0; i < roots.size(); ++i) {
+    keyed[i] = {roots[i], depth() - 1, Search::kFirstRootKey + i};
+  }
+  std::vector<Search::Keyed> deferred;
+  search.rank(keyed, r, deferred);
+  if (!r.best_sum) return std::nullopt;
+  std::vector<Search::Keyed> none;  // with a best known nothing is deferred again
+  for (const Search::Keyed& node : deferred) {
+    search.rank(std::span<const Search::Keyed>(&node, 1), r, none);
+  }
+  // The leaves met before the bound rose are cut to it, then ranked as branch() would meet them.
+  std::erase_if(r.leaves, [&r](const Search::Keyed& l) { return l.c.sum <= r.bound; });
+  std::sort(r.leaves.begin(), r.leaves.end(), [](const Search::Keyed& a, const Search::Keyed& b) {
+    return a.c.sum != b.c.sum ? a.c.sum > b.c.sum : a.key < b.key;
+  });
+  RankedMatches ranked{search.to_match(r.leaves.front().c, n), {}};
+  ranked.contenders.reserve(r.leaves.size());
+  for (const Search::Keyed& l : r.leaves) ranked.contenders.push_back(search.to_match(l.c, n));
+  return ranked;
 }
 
 std::optional<ScanMatch> BranchAndBoundMatcher::match_exhaustive(

@@ -351,6 +351,7 @@ struct Localizer::Impl {
     const ProbabilityGrid* free_view = nullptr;  // the view's grid (its free space)
     Pose2 T_robot_view;                          // the view's frame seen from the newest scan
     ScanMatch best;
+    std::vector<ScanMatch> contenders;  // the poses that rival it (RankedMatches)
     Judgement judged;
   };
 
@@ -385,28 +386,38 @@ struct Localizer::Impl {
     p.refine_points = voxel_filter(points, options.refine_voxel_m);
     p.free_view = &free_view;
     p.T_robot_view = T_robot_view;
-    const std::optional<ScanMatch> best =
-        search.match(search_centre(), p.search_points, search_window(), options.min_search_score);
-    if (best) {
-      p.best = *best;
-      p.judged = judge(*best, p);
+    std::optional<RankedMatches> ranked = search.match_ranked(
+        search_centre(), p.search_points, search_window(), options.min_search_score, rivals());
+    if (ranked) {
+      p.best = ranked->best;
+      p.contenders = std::move(ranked->contenders);
+      p.judged = judge(p.best, p);
     }
     return p;
   }
 
-  /// The best pose of any other place than p's scoring at least `min_score`. A place where the
-  /// view would see through the map's walls is no rival (it would be refused as the best pose
-  /// too): it is passed over for the next (at most max_runner_ups of them). Two look-alike places
-  /// that differ in what stands in the open are told apart so. Nullopt when there is none.
-  [[nodiscard]] std::optional<ScanMatch> runner_up(const Placement& p, double min_score) const {
+  /// The places that rival the best: scoring at least ambiguity_ratio of its excess over what a
+  /// view that sees nothing of the map scores (unknown_score: "the robot is somewhere the map does
+  /// not show" is always an answer); runner_up() looks at up to max_runner_ups + 1 of them.
+  [[nodiscard]] Rivals rivals() const {
+    return {options.unknown_score, options.ambiguity_ratio, options.distinct,
+            options.max_runner_ups + 2};
+  }
+
+  /// The best pose of any other place than p's that rivals it (from the search's contenders). A
+  /// place where the view would see through the map's walls is no rival (it would be refused as
+  /// the best pose too): it is passed over for the next (at most max_runner_ups of them). Two
+  /// look-alike places that differ in what stands in the open are told apart so. Nullopt when
+  /// there is none.
+  [[nodiscard]] std::optional<ScanMatch> runner_up(const Placement& p) const {
     ExcludedPoses seen = options.distinct;
     seen.around = {p.best.T_grid_robot};
+    const auto elsewhere = [&seen](const ScanMatch& m) { return !seen.contains(m.T_grid_robot); };
     for (int n = 0;; ++n) {
-      const std::optional<ScanMatch> other =
-          search.match(search_centre(), p.search_points, search_window(), min_score, seen);
-      if (!other || n == options.max_runner_ups ||
-          judge(*other, p).outcome != Outcome::kSeeThrough) {
-        return other;
+      const auto other = std::find_if(p.contenders.begin(), p.contenders.end(), elsewhere);
+      if (other == p.contenders.end()) return std::nullopt;
+      if (n == options.max_runner_ups || judge(*other, p).outcome != Outcome::kSeeThrough) {
+        return *other;
       }
       seen.around.push_back(other->T_grid_robot);
     }
@@ -435,12 +446,8 @@ struct Localizer::Impl {
     stats.unfit += p.judged.outcome == Outcome::kUnfit ? 1 : 0;
     stats.see_through += p.judged.outcome == Outcome::kSeeThrough ? 1 : 0;
     if (p.judged.outcome == Outcome::kPlaced) {
-      // The runner-up: the best pose of any other place, which must score clearly less, both
-      // counted above what a view that sees nothing of the map scores (unknown_score: "the
-      // robot is somewhere the map does not show" is always an answer).
-      const double floor = options.unknown_score;
-      const std::optional<ScanMatch> other =
-          runner_up(p, floor + options.ambiguity_ratio * (p.best.score - floor));
+      // The runner-up: the best pose of any other place, which must score clearly less.
+      const std::optional<ScanMatch> other = runner_up(p);
       // The view's frame in the map, as this match places it: the next search must agree.
       const Pose2 T_map_view = p.judged.refined.T_grid_robot * view.back().T_view_robot.inverse();
       bool agrees = false;

@@ -69,6 +69,35 @@ struct ExcludedPoses {
   std::vector<Pose2> around;
   double linear_m = 1.0;
   double angular_rad = 0.5;
+
+  /// Whether `pose` is within linear_m and angular_rad of a pose in `around`.
+  [[nodiscard]] bool contains(const Pose2& pose) const;
+};
+
+/// The poses that rival a search's best one (global relocalization's ambiguity test): those
+/// scoring at least `ratio` of the best's excess over `floor` (what a view that sees nothing of
+/// the map scores). A caller looks at the places they stand at one by one, best first, at most
+/// `places` of them, the best's included: place k is the best pose not within `distinct` of
+/// places 1 to k - 1.
+struct Rivals {
+  double floor = 0.5;
+  double ratio = 0.85;
+  ExcludedPoses distinct;  // its linear_m and angular_rad; `around` is not used
+  int places = 5;
+  [[nodiscard]] double score(double best_score) const {
+    return floor + ratio * (best_score - floor);
+  }
+};
+
+/// A search's best pose and the poses that rival it.
+struct RankedMatches {
+  ScanMatch best;
+  /// Best first (the best among them) and, among equal scores, in the order the search met them:
+  /// every pose scoring at least rivals.score(best.score) that can be one of the first
+  /// rivals.places places. So, for places 2 to rivals.places, the first contender not within
+  /// `distinct` of the places before it is the pose match() returns with them excluded and
+  /// min_score rivals.score(best.score).
+  std::vector<ScanMatch> contenders;
 };
 
 /// The precomputed grids of branch and bound: level d holds, for every cell (x, y), the highest
@@ -98,6 +127,18 @@ class BranchAndBoundMatcher {
       const Pose2& T_grid_robot_prior, const std::vector<Vec2>& points_robot,
       const SearchWindow& window, double min_score,
       const std::optional<ExcludedPoses>& excluded = std::nullopt) const;
+
+  /// The best pose as match() finds it and, in the same search, the poses that rival it: one
+  /// search where match() for the best and then for the best of each other place would run
+  /// several (decision 0044). The bound is min_score until a best is found, as match()'s; the
+  /// candidates passed over meanwhile that may hold a rival are searched after. From then on it
+  /// is the rival score, raised to the lowest score of `places` places met so far that no two
+  /// places' exclusions can both hold (twice `distinct` apart).
+  [[nodiscard]] std::optional<RankedMatches> match_ranked(const Pose2& T_grid_robot_prior,
+                                                          const std::vector<Vec2>& points_robot,
+                                                          const SearchWindow& window,
+                                                          double min_score,
+                                                          const Rivals& rivals) const;
 
   /// The same search scoring every candidate at full resolution (the reference for tests).
   [[nodiscard]] std::optional<ScanMatch> match_exhaustive(const Pose2& T_grid_robot_prior,

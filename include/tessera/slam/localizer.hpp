@@ -21,12 +21,12 @@
 //    cell scored at the best probability within one cell of it: decision 0033). The best pose is
 //    accepted only when it is clearly best: the best pose of any other place (more than
 //    distinct.linear_m or distinct.angular_rad away) must explain the view markedly worse
-//    (ambiguity_ratio). A corridor or a row of equal offices stays ambiguous until the view holds
-//    what tells them apart; the localizer then keeps waiting instead of guessing. Nor may the
-//    view see open space where the map has walls (a mirrored place fits the returns but not the
-//    free space between them); a rival place that does is no rival. When the joined view is not
-//    placed, the newest scan alone is searched: a wrong join spoils the view, not the scan
-//    (decision 0030).
+//    (ambiguity_ratio); the best pose and its rivals come from one search (decision 0044). A
+//    corridor or a row of equal offices stays ambiguous until the view holds what tells them
+//    apart; the localizer then keeps waiting instead of guessing. Nor may the view see open space
+//    where the map has walls (a mirrored place fits the returns but not the free space between
+//    them); a rival place that does is no rival. When the joined view is not placed, the newest
+//    scan alone is searched: a wrong join spoils the view, not the scan (decision 0030).
 //
 // Everything runs on the calling thread; the result depends only on the map, the scans and the
 // options.

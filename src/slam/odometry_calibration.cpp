@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace tessera::slam {
 
@@ -49,8 +50,11 @@ double OdometryCalibration::drift_rad_per_m() const {
 
 Pose2 OdometryCalibration::corrected(const Pose2& odometry_step) const {
   const double k_t = translation_scale();
-  return Pose2{k_t * odometry_step.x, k_t * odometry_step.y,
-               rotation_scale() * odometry_step.theta + drift_rad_per_m() * odometry_step.x};
+  // A step that turns nearly half a turn may be scaled past it: wrapped back then (only then, so
+  // that every other step is exactly what it was).
+  double theta = rotation_scale() * odometry_step.theta + drift_rad_per_m() * odometry_step.x;
+  if (std::abs(theta) > std::numbers::pi) theta = normalize_angle(theta);
+  return Pose2{k_t * odometry_step.x, k_t * odometry_step.y, theta};
 }
 
 void OdometryCalibration::break_segment() {

@@ -61,6 +61,13 @@ TEST(OdometryCalibration, FindsTheScalesAndTheDrift) {
   const Pose2 corrected = calibration.corrected({1.05, 0.0, 0.97 * 0.4 + 0.01});
   EXPECT_NEAR(corrected.x, 1.0, 0.005);
   EXPECT_NEAR(corrected.theta, 0.4, 0.003);
+  // Nearly half a turn on the spot as this odometry reports it (0.97 of the true turn): scaled
+  // back to the true turn, past pi, it is a heading like any other, in [-pi, pi].
+  const double reported_rad = 3.1;
+  ASSERT_GT(calibration.rotation_scale() * reported_rad, std::numbers::pi);
+  const Pose2 spin = calibration.corrected({0.0, 0.0, reported_rad});
+  EXPECT_LE(std::abs(spin.theta), std::numbers::pi);
+  EXPECT_NEAR(spin.theta, normalize_angle(calibration.rotation_scale() * reported_rad), 1e-12);
 }
 
 // Intel's robot turns its odometry by about 0.06 rad (3.4 degrees) with every metre it means to go

@@ -266,8 +266,9 @@ int run(int argc, char** argv) {
       // The tracked run against the truth, where the truth is carried from a mapped scan within
       // 2 m: its confident scans further off than 0.1 m / 3 deg, by runs of consecutive ones.
       int judged = 0, off = 0;
-      bool in_run =
-          false;  // (an index and a flag: gcc 12 warns of an optional's uninitialized use)
+      // The run's first scan, if in a run (a flag and an index: with an optional, gcc 12 warns
+      // of an uninitialized use).
+      bool in_run = false;
       std::size_t run_from = 0;
       double run_worst_m = 0.0;
       for (std::size_t i = 0; i <= rest.size(); ++i) {

@@ -401,12 +401,15 @@ struct BranchAndBoundMatcher::Search {
           ++near_count;
         }
       }
-      const auto by_sum = [](const auto& a, const auto& b) { return a.first < b.first; };
-      if (near_count == 0 && tops.size() < static_cast<std::size_t>(rivals.places)) {
+      const auto lowest = [this] {
+        return std::min_element(tops.begin(), tops.end(),
+                                [](const auto& a, const auto& b) { return a.first < b.first; });
+      };
+      const bool full = tops.size() == static_cast<std::size_t>(rivals.places);
+      if (near_count == 0 && !full) {
         tops.emplace_back(sum, pose);
-      } else if (near_count == 0 &&
-                 sum > std::min_element(tops.begin(), tops.end(), by_sum)->first) {
-        *std::min_element(tops.begin(), tops.end(), by_sum) = {sum, pose};
+      } else if (near_count == 0 && sum > lowest()->first) {
+        *lowest() = {sum, pose};
       } else if (near_count == 1 && sum > tops[near].first) {
         tops[near] = {sum, pose};
       } else {
@@ -414,7 +417,7 @@ struct BranchAndBoundMatcher::Search {
       }
       if (tops.size() == static_cast<std::size_t>(rivals.places)) {
         // Ties with the lowest stay: the search's order decides among equal sums.
-        bound = std::max(bound, std::min_element(tops.begin(), tops.end(), by_sum)->first - 1);
+        bound = std::max(bound, lowest()->first - 1);
       }
     }
   };

@@ -277,27 +277,51 @@ struct BranchAndBoundMatcher::Search {
     }
   }
 
-  [[nodiscard]] long score(int level_index, const Candidate& c) const {
+  /// Running sums of a candidate's points, at the end of each of kBlocks blocks of points. A
+  /// child's point never scores more than its parent's (the child's cells lie inside the
+  /// parent's, whose maximum the coarser level holds), so a child whose sum so far plus its
+  /// parent's over the points still to come cannot beat the bound is given up there (kGivenUp,
+  /// below every bound): it would be pruned once scored. Most children are pruned, many of them
+  /// after a few blocks; the answers are unchanged (decision 0045).
+  static constexpr int kBlocks = 8;
+  using Prefix = std::array<long, kBlocks>;
+  static constexpr long kGivenUp = -1;
+
+  /// The sum of the candidate's points at the level. With `parent` (the prefix of the candidate
+  /// one level up that covers it), kGivenUp as soon as the sum cannot exceed `bound`; fills `out`.
+  [[nodiscard]] long score(int level_index, const Candidate& c, const Prefix* parent = nullptr,
+                           long bound = 0, Prefix* out = nullptr) const {
     const Level& level = matcher.levels_[static_cast<std::size_t>(level_index)];
-    long sum = 0;
     const int ox = c.x + level.offset, oy = c.y + level.offset;
     const std::vector<Cell>& scan = scans[static_cast<std::size_t>(c.angle)];
     const CellBox& box = boxes[static_cast<std::size_t>(c.angle)];
-    if (box.min.x + ox >= 0 && box.min.y + oy >= 0 && box.max.x + ox < level.width &&
-        box.max.y + oy < level.height) {
-      // Every point on the level: no bounds test (the same sum).
-      for (const Cell cell : scan) {
-        sum += level.cells[static_cast<std::size_t>(cell.y + oy) *
-                               static_cast<std::size_t>(level.width) +
-                           static_cast<std::size_t>(cell.x + ox)];
+    // Every point on the level: no bounds test (the same sum).
+    const bool inside = box.min.x + ox >= 0 && box.min.y + oy >= 0 &&
+                        box.max.x + ox < level.width && box.max.y + oy < level.height;
+    const std::size_t n = scan.size();
+    const std::size_t per_block = (n + kBlocks - 1) / kBlocks;
+    long sum = 0;
+    std::size_t i = 0;
+    for (int b = 0; b < kBlocks; ++b) {
+      const std::size_t end = std::min(n, i + per_block);
+      if (inside) {
+        for (; i < end; ++i) {
+          sum += level.cells[static_cast<std::size_t>(scan[i].y + oy) *
+                                 static_cast<std::size_t>(level.width) +
+                             static_cast<std::size_t>(scan[i].x + ox)];
+        }
+      } else {
+        for (; i < end; ++i) {
+          const int x = scan[i].x + ox, y = scan[i].y + oy;
+          if (x < 0 || y < 0 || x >= level.width || y >= level.height) continue;
+          sum += level.cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) +
+                             static_cast<std::size_t>(x)];
+        }
       }
-      return sum;
-    }
-    for (const Cell cell : scan) {
-      const int x = cell.x + ox, y = cell.y + oy;
-      if (x < 0 || y < 0 || x >= level.width || y >= level.height) continue;
-      sum += level.cells[static_cast<std::size_t>(y) * static_cast<std::size_t>(level.width) +
-                         static_cast<std::size_t>(x)];
+      if (out) (*out)[static_cast<std::size_t>(b)] = sum;
+      if (parent && sum + (parent->back() - (*parent)[static_cast<std::size_t>(b)]) <= bound) {
+        return kGivenUp;
+      }
     }
     return sum;
   }
@@ -315,8 +339,11 @@ struct BranchAndBoundMatcher::Search {
 
   /// The (at most four) children of a candidate at `level`, scored one level down and sorted best
   /// first by insertion (stable: ties keep their order); on the caller's stack, since the search
-  /// visits many nodes and must not allocate for each. Returns how many.
-  std::size_t split(int level, const Candidate& c, std::array<Candidate, 4>& children) const {
+  /// visits many nodes and must not allocate for each. With the candidate's prefix, children that
+  /// cannot beat `bound` are given up (they sort last); their prefixes go to `prefixes`. Returns
+  /// how many.
+  std::size_t split(int level, const Candidate& c, const Prefix* prefix, long bound,
+                    std::array<Candidate, 4>& children, std::array<Prefix, 4>& prefixes) const {
     const int half = 1 << (level - 1);
     std::size_t n = 0;
     for (const int dx : {0, half}) {
@@ -324,30 +351,40 @@ struct BranchAndBoundMatcher::Search {
       for (const int dy : {0, half}) {
         if (c.y + dy > n_lin) break;
         Candidate child{c.angle, c.x + dx, c.y + dy, 0};
-        child.sum = score(level - 1, child);
+        Prefix child_prefix;
+        child.sum = score(level - 1, child, prefix, bound, &child_prefix);
         std::size_t i = n++;
-        for (; i > 0 && children[i - 1].sum < child.sum; --i) children[i] = children[i - 1];
+        for (; i > 0 && children[i - 1].sum < child.sum; --i) {
+          children[i] = children[i - 1];
+          prefixes[i] = prefixes[i - 1];
+        }
         children[i] = child;
+        prefixes[i] = child_prefix;
       }
     }
     return n;
   }
 
   /// Hess et al. 2016, Algorithm 3 (depth-first, best child first): the best candidate below
-  /// `candidates` (sorted, best first) whose sum exceeds `bound`, or nullopt.
+  /// `candidates` (sorted, best first; with their prefixes, or none) whose sum exceeds `bound`,
+  /// or nullopt.
   std::optional<Candidate> branch(int level, std::span<const Candidate> candidates,
-                                  long bound) const {
+                                  const Prefix* prefixes, long bound) const {
     std::optional<Candidate> best;
-    for (const Candidate& c : candidates) {
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const Candidate& c = candidates[k];
       if (c.sum <= bound) break;  // sorted: no later candidate can do better
       if (level == 0) {
         if (is_excluded(c)) continue;
         return c;
       }
       std::array<Candidate, 4> children;
-      const std::size_t n = split(level, c, children);
+      std::array<Prefix, 4> child_prefixes;
+      const std::size_t n =
+          split(level, c, prefixes ? &prefixes[k] : nullptr, bound, children, child_prefixes);
       if (std::optional<Candidate> r =
-              branch(level - 1, std::span<const Candidate>(children.data(), n), bound)) {
+              branch(level - 1, std::span<const Candidate>(children.data(), n),
+                     child_prefixes.data(), bound)) {
         best = r;
         bound = r->sum;
       }
@@ -426,7 +463,8 @@ struct BranchAndBoundMatcher::Search {
   /// best is found and at the rival bound after it. The candidates passed over before the best
   /// was found that may still hold a rival are kept in `deferred` and searched after; the keys
   /// put every leaf back in branch()'s order.
-  void rank(std::span<const Keyed> candidates, Ranking& r, std::vector<Keyed>& deferred) const {
+  void rank(std::span<const Keyed> candidates, const Prefix* prefixes, Ranking& r,
+            std::vector<Keyed>& deferred) const {
     for (std::size_t k = 0; k < candidates.size(); ++k) {
       const Keyed& node = candidates[k];
       if (node.c.sum <= r.bound) break;
@@ -442,12 +480,14 @@ struct BranchAndBoundMatcher::Search {
         continue;
       }
       std::array<Candidate, 4> children;
-      const std::size_t n = split(node.level, node.c, children);
+      std::array<Prefix, 4> child_prefixes;
+      const std::size_t n = split(node.level, node.c, prefixes ? &prefixes[k] : nullptr, r.bound,
+                                  children, child_prefixes);
       std::array<Keyed, 4> keyed;
       for (std::size_t i = 0; i < n; ++i) {
         keyed[i] = {children[i], node.level - 1, (node.key << 2) | i};
       }
-      rank(std::span<const Keyed>(keyed.data(), n), r, deferred);
+      rank(std::span<const Keyed>(keyed.data(), n), child_prefixes.data(), r, deferred);
     }
   }
 
@@ -518,7 +558,7 @@ std::optional<ScanMatch> BranchAndBoundMatcher::match(
       bound = c.sum;
     }
   });
-  if (std::optional<Search::Candidate> better = search.branch(depth() - 1, roots, bound)) {
+  if (std::optional<Search::Candidate> better = search.branch(depth() - 1, roots, nullptr, bound)) {
     best = better;
   }
   if (!best) return std::nullopt;
@@ -549,11 +589,11 @@ std::optional<RankedMatches> BranchAndBoundMatcher::match_ranked(
     keyed[i] = {roots[i], depth() - 1, Search::kFirstRootKey + i};
   }
   std::vector<Search::Keyed> deferred;
-  search.rank(keyed, r, deferred);
+  search.rank(keyed, nullptr, r, deferred);
   if (!r.best_sum) return std::nullopt;
   std::vector<Search::Keyed> none;  // with a best known nothing is deferred again
   for (const Search::Keyed& node : deferred) {
-    search.rank(std::span<const Search::Keyed>(&node, 1), r, none);
+    search.rank(std::span<const Search::Keyed>(&node, 1), nullptr, r, none);
   }
   // The leaves met before the bound rose are cut to it, then ranked as branch() would meet them.
   std::erase_if(r.leaves, [&r](const Search::Keyed& l) { return l.c.sum <= r.bound; });

@@ -351,7 +351,7 @@ struct BranchAndBoundMatcher::Search {
       for (const int dy : {0, half}) {
         if (c.y + dy > n_lin) break;
         Candidate child{c.angle, c.x + dx, c.y + dy, 0};
-        Prefix child_prefix;
+        Prefix child_prefix{};  // a given-up child fills only its first blocks
         child.sum = score(level - 1, child, prefix, bound, &child_prefix);
         std::size_t i = n++;
         for (; i > 0 && children[i - 1].sum < child.sum; --i) {

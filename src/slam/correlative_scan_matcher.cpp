@@ -295,7 +295,7 @@ struct BranchAndBoundMatcher::Search {
     const int ox = c.x + level.offset, oy = c.y + level.offset;
     const std::vector<Cell>& scan = scans[static_cast<std::size_t>(c.angle)];
     const CellBox& box = boxes[static_cast<std::size_t>(c.angle)];
-    // Every point on the level: no bounds test (the same sum).
+    // Inside: every point on the level, so no bounds test (the same sum).
     const bool inside = box.min.x + ox >= 0 && box.min.y + oy >= 0 &&
                         box.max.x + ox < level.width && box.max.y + oy < level.height;
     const std::size_t n = scan.size();

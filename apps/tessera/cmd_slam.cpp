@@ -37,14 +37,7 @@ SlamCommand::SlamCommand(CLI::App& app) {
       "graph.g2o and report.json to --out");
   input_.add_options(*sub_);
   add_world_options(*sub_, world_);
-  sub_->add_option("--seed", seed_, "Simulated run: seed of the start, odometry and range noise")
-      ->capture_default_str();
-  sub_->add_option("--duration-s", duration_s_,
-                   "Simulated run: stop the covering tour after this many seconds (0: no limit)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  sub_->add_option("--start", start_,
-                   "Simulated run: start position X,Y in metres (default: random)");
+  simulated_input_.add_options(*sub_);
   sub_->add_option("--out", out_, "Output folder")->capture_default_str();
   sub_->add_option("--relations", relations_,
                    "Score the trajectory against a relations file (Kummerle et al. 2009)");
@@ -90,6 +83,7 @@ int SlamCommand::run() const {
   std::optional<LaserLog> read_log;
   std::optional<World> world;
   std::optional<SimulatedLaserRun> simulated;
+  LaserRunOptions run_options;  // of the simulated run
   nlohmann::json bag_report;  // --bag: the topics and frames read
   if (input_.given()) {
     Result<LaserLog> read = input_.read(&bag_report);
@@ -100,19 +94,11 @@ int SlamCommand::run() const {
     Result<World> loaded = load_world(world_, 0.05);
     if (!loaded) return report_error(loaded.error());
     world = std::move(loaded).value();
-    LaserRunOptions run_options;
-    run_options.max_duration_s = duration_s_;
-    if (start_) {
-      Result<Vec2> p = parse_point(*start_, "--start");
-      if (!p) return report_error(p.error());
-      run_options.start = Pose2{p->x, p->y, 0.0};
-    }
-    Result<SimulatedLaserRun> run = simulate_laser_run(*world, run_options, seed_);
-    if (!run) {
-      Error e = run.error();
-      e.message = world->name().empty() ? e.message : world->name() + ": " + e.message;
-      return report_error(e);
-    }
+    Result<LaserRunOptions> o = simulated_input_.options();
+    if (!o) return report_error(o.error());
+    run_options = *o;
+    Result<SimulatedLaserRun> run = simulated_input_.simulate(*world, run_options);
+    if (!run) return report_error(run.error());
     simulated = std::move(run).value();
   }
   options.map_resolution_m = cell_m_ ? *cell_m_ : world ? world->geometry().resolution_m() : 0.05;
@@ -177,8 +163,9 @@ int SlamCommand::run() const {
                                                          input_name)},
                            {"slam", slam_stats_json(r, log)}};
   // A log has no random draw: the seed is null unless the run is simulated.
-  report.update(core_report({"slam", simulated ? std::optional<std::uint64_t>(seed_) : std::nullopt,
-                             report["options"], wall_s, duration_s}));
+  report.update(core_report(
+      {"slam", simulated ? std::optional<std::uint64_t>(simulated_input_.seed) : std::nullopt,
+       report["options"], wall_s, duration_s}));
   if (relations_) report["options"]["relations"] = relations_->string();
   if (input_.bag) report["bag"] = bag_report;
   Result<std::optional<slam::TrimmedRun>> trimmed =
@@ -196,7 +183,7 @@ int SlamCommand::run() const {
     score = *scored;
     map_accuracy = compare_to_truth_at_centres(
         r.map, TruthGrid(world->geometry(), world->solid_cells()), score->T_truth_slam());
-    report["simulation"] = simulation_json(*simulated, *world);
+    report["simulation"] = simulation_json(*simulated, *world, run_options);
     report["ate"] = ate_json(*score);
     report["map_accuracy"] = map_accuracy_json(map_accuracy, score->T_truth_slam());
   }

@@ -12,6 +12,7 @@
 #include "cli_support.hpp"
 #include "laser_input.hpp"
 #include "recording.hpp"
+#include "simulated_laser_input.hpp"
 #include "slam_live.hpp"
 #include "tessera/core/relation.hpp"
 #include "tessera/eval/trajectory_error.hpp"
@@ -202,9 +203,7 @@ class SlamCommand : public Command {
  private:
   LaserInput input_;  // --log or --bag; neither: a simulated run in world_
   WorldSource world_;
-  std::uint64_t seed_ = 1;
-  double duration_s_ = 300.0;
-  std::optional<std::string> start_;  // "X,Y" in metres
+  SimulatedLaserInput simulated_input_;  // neither: the simulated run's options
   std::filesystem::path out_ = "out/slam";
   std::optional<std::filesystem::path> relations_;
   double time_offset_s_ = 0.0;

@@ -96,8 +96,11 @@ nlohmann::json slam_stats_json(const slam::LaserSlamResult& r, const LaserLog& l
           {"map_s", st.map_s}};
 }
 
-nlohmann::json simulation_json(const SimulatedLaserRun& run, const World& world) {
+nlohmann::json simulation_json(const SimulatedLaserRun& run, const World& world,
+                               const LaserRunOptions& options) {
   return {{"duration_s", run.duration_s},
+          {"scan_rate_hz", options.scan_rate_hz},
+          {"lidar_sweep_s", options.lidar_sweep_s},
           {"path_length_m", run.path_length_m},
           {"turned_rad", run.turned_rad},
           {"tour_completed", run.tour_completed},

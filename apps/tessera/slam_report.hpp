@@ -29,7 +29,8 @@ nlohmann::json slam_options_json(const slam::LaserSlamOptions& options,
 nlohmann::json slam_stats_json(const slam::LaserSlamResult& r, const LaserLog& log);
 /// --bag: the topics and frames read.
 nlohmann::json bag_json(const RobotBag& bag);
-nlohmann::json simulation_json(const SimulatedLaserRun& run, const World& world);
+nlohmann::json simulation_json(const SimulatedLaserRun& run, const World& world,
+                               const LaserRunOptions& options);
 nlohmann::json ate_json(const DriftCorrectionScore& score);
 nlohmann::json map_accuracy_json(const MapAccuracy& m, const Pose2& T_truth_map);
 

@@ -280,8 +280,7 @@ int run(int argc, char** argv) {
     const slam::RangeInserter inserter(options.map_insert);
     slam::ProbabilityGrid grid(GridGeometry({-10.0, -10.0}, options.map_resolution_m, 400, 400));
     for (const StampedScan& s : log->scans) {
-      inserter.insert(grid, s.odometry,
-                      slam::scan_to_points(s.scan, s.laser_in_robot, options.points));
+      inserter.insert(grid, s.odometry, slam::scan_to_points(s, options.points));
     }
     const OccupancyGrid map = grid.to_occupancy_grid(2);
     RenderLayers bare;

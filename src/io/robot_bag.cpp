@@ -11,6 +11,7 @@
 #include "tessera/io/ros_messages.hpp"
 #include "tessera/io/tf_tree.hpp"
 #include "tessera/sensors/range_scan.hpp"
+#include "tessera/sensors/scan_sweep.hpp"
 
 namespace tessera {
 namespace {
@@ -102,12 +103,20 @@ Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_read
     if (!valid) ++no_return_readings;
     scan.ranges_m.push_back(valid ? static_cast<double>(r) : scan.max_range_m);
   }
+  // The beams' times: time_increment as the message gives it, when the sweep it makes lasts at
+  // most kMaxSweep_s (a driver that sets it in other units, or to nonsense, is not believed).
+  constexpr double kMaxSweep_s = 1.0;
+  const double sweep_s = std::abs(static_cast<double>(msg.time_increment_s)) *
+                         static_cast<double>(msg.ranges_m.size());
+  if (std::isfinite(sweep_s) && sweep_s <= kMaxSweep_s) {
+    scan.time_increment_s = msg.time_increment_s;
+  }
   // A driver that sweeps clockwise sends a negative angle_increment; tessera's scans turn
-  // counter-clockwise, so the same beams are put in that order.
+  // counter-clockwise, so the same beams are put in that order (each keeping its time).
   if (scan.angle_increment_rad < 0.0) {
     scan.angle_min_rad = last_angle_rad(scan);
     scan.angle_increment_rad = -scan.angle_increment_rad;
-    std::reverse(scan.ranges_m.begin(), scan.ranges_m.end());
+    reverse_beams(scan);
   }
   return scan;
 }
@@ -226,15 +235,20 @@ Result<RobotBag> robot_bag_from(const RosBag& bag, const std::string& file,
     StampedScan s;
     s.t_s = seconds(stamp);
     if (out.log.has_odometry) {  // without, every scan's odometry is the identity
-      s.odometry = pose_at(odom, stamp);
+      Pose2 T_child_base;
       if (!base_is_child) {
-        Result<RosTransform> T_child_base = tf.lookup(child_frame, out.base_frame, stamp);
-        if (!T_child_base) {
-          return input_error(file + ": base frame '" + out.base_frame + "': " +
-                             T_child_base.error().message + " (the odometry's child frame)");
+        Result<RosTransform> T = tf.lookup(child_frame, out.base_frame, stamp);
+        if (!T) {
+          return input_error(file + ": base frame '" + out.base_frame + "': " + T.error().message +
+                             " (the odometry's child frame)");
         }
-        s.odometry = s.odometry * planar_pose(*T_child_base);
+        T_child_base = planar_pose(*T);
       }
+      s.odometry = pose_at(odom, stamp);
+      if (!base_is_child) s.odometry = s.odometry * T_child_base;
+      s.robot_velocity = sweep_velocity(*scan, [&](double dt_s) {
+        return pose_at(odom, stamp + std::llround(dt_s * 1e9)) * T_child_base;
+      });
     }
     const std::string_view laser = tf_frame_name(msg.header.frame_id);
     if (laser != out.base_frame) {

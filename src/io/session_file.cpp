@@ -57,6 +57,28 @@ std::string scans_payload(const std::vector<StampedScan>& scans) {
   return out;
 }
 
+/// Whether any scan was swept beam by beam (its beams' times and its robot's velocity): then the
+/// SWEP record keeps them (format 4).
+bool any_swept(const std::vector<StampedScan>& scans) {
+  return std::any_of(scans.begin(), scans.end(), [](const StampedScan& s) {
+    return s.scan.first_beam_s != 0.0 || s.scan.time_increment_s != 0.0 ||
+           !s.robot_velocity.is_zero();
+  });
+}
+
+std::string sweeps_payload(const std::vector<StampedScan>& scans) {
+  std::string out;
+  put(out, static_cast<std::uint64_t>(scans.size()));
+  for (const StampedScan& s : scans) {
+    put(out, s.scan.first_beam_s);
+    put(out, s.scan.time_increment_s);
+    put(out, s.robot_velocity.vx_m_per_s);
+    put(out, s.robot_velocity.vy_m_per_s);
+    put(out, s.robot_velocity.omega_rad_per_s);
+  }
+  return out;
+}
+
 std::string graph_payload(const posegraph::PoseGraph& g, const std::vector<int>& vertex_scan) {
   std::string out;
   put(out, static_cast<std::uint64_t>(g.poses.size()));
@@ -171,6 +193,22 @@ void read_scans(Fields& f, std::vector<StampedScan>& scans) {
   }
 }
 
+void read_sweeps(Fields& f, std::vector<StampedScan>& scans) {
+  const std::size_t n = f.count("sweep count", 5 * 8);
+  if (!f.failed() && n != scans.size()) {
+    f.fail(std::to_string(n) + " sweeps for " + std::to_string(scans.size()) + " scans");
+    return;
+  }
+  for (std::size_t i = 0; i < n && !f.failed(); ++i) {
+    StampedScan& s = scans[i];
+    s.scan.first_beam_s = f.get<double>("first beam time");
+    s.scan.time_increment_s = f.get<double>("time increment");
+    s.robot_velocity.vx_m_per_s = f.get<double>("robot velocity");
+    s.robot_velocity.vy_m_per_s = f.get<double>("robot velocity");
+    s.robot_velocity.omega_rad_per_s = f.get<double>("robot velocity");
+  }
+}
+
 void read_graph(Fields& f, posegraph::PoseGraph& g, std::vector<int>& vertex_scan) {
   const std::size_t n = f.count("vertex count", 4 + 4 + 24);
   g.poses.resize(n);
@@ -226,7 +264,9 @@ void read_map(Fields& f, OccupancyGrid& map) {
 
 std::string encode_session(const Session& s) {
   std::string out(kSignature);
-  put(out, kSessionFormatVersion);
+  // Format 3 unless a scan was swept: a reader of format 3 would skip SWEP and misplace its beams.
+  const bool swept = any_swept(s.scans);
+  put(out, swept ? kSessionFormatVersion : std::uint32_t{3});
   std::string meta;
   put_string(meta, s.tessera_version);
   put_string(meta, s.command);
@@ -235,6 +275,7 @@ std::string encode_session(const Session& s) {
   put_string(options, s.options_yaml);
   put_record(out, "OPTS", options);
   put_record(out, "SCAN", scans_payload(s.scans));
+  if (swept) put_record(out, "SWEP", sweeps_payload(s.scans));
   std::string starts;
   put(starts, static_cast<std::uint64_t>(s.trajectory_starts.size()));
   for (const SessionTrajectoryStart& t : s.trajectory_starts) {
@@ -318,6 +359,11 @@ Result<Session> decode_session(std::string_view bytes, const std::string& name) 
   });
   parse("OPTS", [&](Fields& f) { s.options_yaml = f.text("options"); });
   parse("SCAN", [&](Fields& f) { read_scans(f, s.scans); });
+  if (records.contains("SWEP")) {
+    parse("SWEP", [&](Fields& f) { read_sweeps(f, s.scans); });
+  } else if (version >= 4) {
+    return error("no SWEP record");
+  }
   parse("TRAJ", [&](Fields& f) {
     s.trajectory.resize(f.count("pose count", 32));
     for (StampedPose2& p : s.trajectory) {

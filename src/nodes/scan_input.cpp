@@ -13,6 +13,7 @@
 #include "tessera/net/ros_names.hpp"
 #include "tessera/record/ros_conversions.hpp"
 #include "tessera/sensors/range_scan.hpp"
+#include "tessera/sensors/scan_sweep.hpp"
 
 namespace tessera::nodes {
 namespace {
@@ -37,9 +38,11 @@ struct ScanInput::State {
     std::int64_t t_ns = 0;
     std::string frame;
     RangeScan scan;
-    // An odometry message at or after t_ns arrived after this scan did: the odometry around it
-    // is in. (A log's stamps may go backwards, so older odometry with later stamps says nothing.)
+    // An odometry message at or after its last beam's time arrived after this scan did: the
+    // odometry around it is in. (A log's stamps may go backwards, so older odometry with later
+    // stamps says nothing.)
     bool odometry_passed = false;
+    std::int64_t last_beam_ns = 0;  // t_ns, or later when its beams were swept one by one
     SteadyClock::time_point received{};
   };
 
@@ -103,8 +106,11 @@ struct ScanInput::State {
       pending.pop_front();
       ++stats.scans_dropped_overflow;
     }
-    pending.push_back({m->header.stamp_ns, std::string(tf_frame_name(m->header.frame_id)),
-                       std::move(*scan), false, SteadyClock::now()});
+    const std::size_t last = scan->ranges_m.size() - 1;  // not empty: it has a usable reading
+    const double last_beam_s = std::max({0.0, beam_time_s(*scan, 0), beam_time_s(*scan, last)});
+    const std::int64_t stamp_ns = m->header.stamp_ns;
+    pending.push_back({stamp_ns, std::string(tf_frame_name(m->header.frame_id)), std::move(*scan),
+                       false, stamp_ns + std::llround(last_beam_s * 1e9), SteadyClock::now()});
   }
 
   void on_odom(std::span<const std::uint8_t> cdr) {
@@ -119,7 +125,9 @@ struct ScanInput::State {
       base_frame = tf_frame_name(m->child_frame_id);
     }
     const PoseAtNs o{m->header.stamp_ns, planar_pose(m->pose)};
-    for (PendingScan& p : pending) p.odometry_passed = p.odometry_passed || o.t_ns >= p.t_ns;
+    for (PendingScan& p : pending) {
+      p.odometry_passed = p.odometry_passed || o.t_ns >= p.last_beam_ns;
+    }
     // Messages arrive in stamp order from one publisher; an older one is put in its place.
     const auto at = std::upper_bound(odometry.begin(), odometry.end(), o.t_ns,
                                      [](std::int64_t t, const PoseAtNs& x) { return t < x.t_ns; });
@@ -191,7 +199,7 @@ std::optional<ReadyScan> ScanInput::next(bool flush) {
     const State::PendingScan& p = s.pending.front();
     const bool odometry_known =
         !s.use_odometry ||
-        (!s.odometry.empty() && (flush || p.odometry_passed || s.has_odometry_at(p.t_ns)));
+        (!s.odometry.empty() && (flush || p.odometry_passed || s.has_odometry_at(p.last_beam_ns)));
     if (!odometry_known && !flush) return std::nullopt;
     const std::optional<PlanarLaser> laser = odometry_known ? s.laser_in_robot(p) : std::nullopt;
     if (odometry_known && !laser && !flush && s.pending.size() < s.queue_depth) {
@@ -204,8 +212,11 @@ std::optional<ReadyScan> ScanInput::next(bool flush) {
     }
     if (!s.use_odometry) s.odom_frame = s.robot_frame(p);
     const Pose2 T_odom_base = s.use_odometry ? pose_at(s.odometry, p.t_ns) : Pose2{};
+    const Twist2 velocity = !s.use_odometry ? Twist2{} : sweep_velocity(p.scan, [&](double dt_s) {
+      return pose_at(s.odometry, p.t_ns + std::llround(dt_s * 1e9));
+    });
     ReadyScan ready{StampedScan{seconds(p.t_ns), T_odom_base, laser->T_base_laser,
-                                laser->upside_down ? mirrored(p.scan) : p.scan},
+                                laser->upside_down ? mirrored(p.scan) : p.scan, velocity},
                     p.t_ns, p.received};
     s.prune_odometry();  // while this scan still waits: it keeps the odometry around it
     s.pending.pop_front();

@@ -73,12 +73,25 @@ LaserScanMessage laser_scan_message(const RangeScan& scan, std::int64_t stamp_ns
   LaserScanMessage m;
   m.header = {stamp_ns, frame};
   const std::size_t n = scan.ranges_m.size();
-  m.angle_min_rad = static_cast<float>(scan.angle_min_rad);
-  m.angle_increment_rad = static_cast<float>(scan.angle_increment_rad);
-  m.angle_max_rad = static_cast<float>(last_angle_rad(scan));
   m.range_min_m = static_cast<float>(scan.min_range_m);
   m.range_max_m = static_cast<float>(scan.max_range_m);
   m.ranges_m.reserve(n);
+  // A clockwise sweep (its last beam taken at the stamp) goes out as the driver sent it: beams
+  // clockwise, the first at the stamp, as LaserScan's time_increment counts them.
+  if (scan.time_increment_s < 0.0 && n > 0 && beam_time_s(scan, n - 1) == 0.0) {
+    m.angle_min_rad = static_cast<float>(last_angle_rad(scan));
+    m.angle_increment_rad = static_cast<float>(-scan.angle_increment_rad);
+    m.angle_max_rad = static_cast<float>(scan.angle_min_rad);
+    m.time_increment_s = static_cast<float>(-scan.time_increment_s);
+    for (auto r = scan.ranges_m.rbegin(); r != scan.ranges_m.rend(); ++r) {
+      m.ranges_m.push_back(static_cast<float>(*r));
+    }
+    return m;
+  }
+  m.angle_min_rad = static_cast<float>(scan.angle_min_rad);
+  m.angle_increment_rad = static_cast<float>(scan.angle_increment_rad);
+  m.angle_max_rad = static_cast<float>(last_angle_rad(scan));
+  m.time_increment_s = static_cast<float>(scan.time_increment_s);
   for (const double r : scan.ranges_m) m.ranges_m.push_back(static_cast<float>(r));
   return m;
 }

@@ -6,7 +6,9 @@
 
 #include "tessera/core/angle.hpp"
 #include "tessera/core/assert.hpp"
+#include "tessera/core/pose_interpolation.hpp"
 #include "tessera/core/rng.hpp"
+#include "tessera/sensors/scan_sweep.hpp"
 #include "tessera/sim/lidar_scan.hpp"
 
 namespace tessera {
@@ -143,6 +145,9 @@ std::optional<std::string> validate(const LaserRunOptions& o) {
   if (o.steps_per_scan < 1 || o.steps_per_scan > kMaxStepsPerScan) {
     return "steps_per_scan must be in [1, 1000], got " + std::to_string(o.steps_per_scan);
   }
+  if (!(o.lidar_sweep_s >= 0.0 && o.lidar_sweep_s <= 1.0 / o.scan_rate_hz)) {
+    return "lidar_sweep_s must be in [0, 1 / scan_rate_hz], got " + std::to_string(o.lidar_sweep_s);
+  }
   if (auto p = validate(o.lidar)) return "lidar: " + *p;
   const Pose2& l = o.laser_in_robot;
   if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.theta)) {
@@ -193,6 +198,12 @@ class LaserRunState {
       odometry_ = odometry_ * noisy_odometry_increment(T_prev_cur, o_.odometry, odometry_rng_);
       truth_ = next;
     }
+    // The last scan's velocity over its sweep, now that the odometry after it is known.
+    const OdometryReading& before = run_.log.odometry.back();
+    const double period_s = 1.0 / o_.scan_rate_hz;
+    run_.log.scans.back().robot_velocity = sweep_velocity(
+        run_.log.scans.back().scan,
+        [&](double dt_s) { return interpolate(before.pose, odometry_, dt_s / period_s); });
     // When the tour ends within the interval, this last scan is taken at rest.
     ++scan_index_;
     record();
@@ -209,7 +220,21 @@ class LaserRunState {
     s.t_s = t_s;
     s.odometry = odometry_;
     s.laser_in_robot = o_.laser_in_robot;
-    s.scan = simulate_lidar_scan(world_, truth_ * o_.laser_in_robot, o_.lidar, lidar_rng_);
+    if (o_.lidar_sweep_s > 0.0) {
+      // Beam by beam from where the robot will be: the drive is a plan, so a copy of its state
+      // drives the sweep ahead.
+      const double increment_s = o_.lidar_sweep_s / static_cast<double>(o_.lidar.beams);
+      std::vector<Pose2> T_world_laser(static_cast<std::size_t>(o_.lidar.beams));
+      DriveState ahead = state_;
+      for (std::size_t i = 0; i < T_world_laser.size(); ++i) {
+        if (i > 0) profile_->step(ahead, increment_s);
+        T_world_laser[i] = (i == 0 ? truth_ : profile_->pose(ahead, start_)) * o_.laser_in_robot;
+      }
+      s.scan = simulate_lidar_scan(world_, T_world_laser, o_.lidar, lidar_rng_);
+      s.scan.time_increment_s = increment_s;
+    } else {
+      s.scan = simulate_lidar_scan(world_, truth_ * o_.laser_in_robot, o_.lidar, lidar_rng_);
+    }
     run_.log.scans.push_back(std::move(s));
     run_.log.odometry.push_back({t_s, odometry_});
     run_.truth.push_back({t_s, truth_});

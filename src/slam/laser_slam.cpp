@@ -476,7 +476,7 @@ struct LaserSlam::Impl {
   Status add_scan(const StampedScan& scan, int scans_total) {
     const auto t0 = std::chrono::steady_clock::now();
     const int scan_index = static_cast<int>(scans.size());
-    ScanPoints points = scan_to_points(scan.scan, scan.laser_in_robot, options.points);
+    ScanPoints points = scan_to_points(scan, options.points);
     const std::vector<Vec2> matching = voxel_filter(points.returns_m, options.matching_voxel_m);
     const std::optional<WallDirection> wall = manhattan_wall(points);
 

@@ -497,7 +497,7 @@ struct Localizer::Impl {
     LocalizedScan out;
     out.t_s = scan.t_s;
     out.score = kMinProbability;
-    ScanPoints points = scan_to_points(scan.scan, scan.laser_in_robot, options.points);
+    ScanPoints points = scan_to_points(scan, options.points);
     const Pose2 increment = have_odometry ? between(last_odometry, scan.odometry) : Pose2{};
     last_odometry = scan.odometry;
     have_odometry = true;
@@ -635,7 +635,7 @@ ProbabilityGrid frozen_map(const std::vector<const StampedScan*>& scans,
                                           std::floor((T.y - 10.0) / resolution_m) * resolution_m},
                                          resolution_m, side, side));
     }
-    inserter.insert(map, T, scan_to_points(scans[i]->scan, scans[i]->laser_in_robot, points));
+    inserter.insert(map, T, scan_to_points(*scans[i], points));
   }
   return map;
 }

@@ -15,7 +15,14 @@ std::optional<std::string> validate(const ScanPointsOptions& o) {
 }
 
 ScanPoints scan_to_points(const RangeScan& scan, const Pose2& T_robot_laser,
-                          const ScanPointsOptions& options) {
+                          const ScanPointsOptions& options, const Twist2& robot_velocity) {
+  // Where the robot was when beam i was taken, seen from the stamp; none when it did not move.
+  const bool unwarp =
+      !robot_velocity.is_zero() && (scan.first_beam_s != 0.0 || scan.time_increment_s != 0.0);
+  const auto place = [&](std::size_t i, Vec2 p_laser) {
+    const Vec2 p_robot = T_robot_laser * p_laser;
+    return unwarp ? displacement(robot_velocity, beam_time_s(scan, i)) * p_robot : p_robot;
+  };
   ScanPoints out;
   out.origin_m = T_robot_laser.translation();
   out.returns_m.reserve(scan.ranges_m.size());
@@ -28,10 +35,10 @@ ScanPoints scan_to_points(const RangeScan& scan, const Pose2& T_robot_laser,
     const Vec2 dir{std::cos(angle), std::sin(angle)};
     const bool no_return = scan.max_range_m > 0.0 && r >= scan.max_range_m;
     if (!no_return && r < options.max_range_m) {
-      out.returns_m.push_back(T_robot_laser * (dir * r));
+      out.returns_m.push_back(place(i, dir * r));
       out.return_beams.push_back(static_cast<int>(i));
     } else if (options.missing_ray_length_m > 0.0) {
-      out.misses_m.push_back(T_robot_laser * (dir * options.missing_ray_length_m));
+      out.misses_m.push_back(place(i, dir * options.missing_ray_length_m));
     }
   }
   return out;

@@ -82,7 +82,7 @@ SubmapTrim trim_covered_submaps(const std::vector<StampedScan>& scans,
     if (vertex_scan[v] < 0) continue;
     const StampedScan& s = scans[static_cast<std::size_t>(vertex_scan[v])];
     const Pose2& T = graph.poses[v];
-    const ScanPoints points = scan_to_points(s.scan, s.laser_in_robot, options.points);
+    const ScanPoints points = scan_to_points(s, options.points);
     NodeRays n{vertex_scan[v],
                trajectory_of[static_cast<std::size_t>(vertex_scan[v])],
                T * points.origin_m,

@@ -165,6 +165,31 @@ TEST(CliSlam, SimulatedRunIsScoredAgainstItsGroundTruth) {
   EXPECT_DOUBLE_EQ(report["options"]["max_hit_evidence_scale"].get<double>(), 2.0);
 }
 
+// A simulated spinning lidar (each scan swept over 0.2 s while the robot moves): its scans are
+// placed beam by beam, and the run keeps to the truth. A sweep longer than a scan period is a
+// usage error.
+TEST(CliSlam, ASimulatedSpinningLidarsRunIsScored) {
+  TempDir dir;
+  const auto out = dir.path() / "out";
+  const support::CliRun run = run_cli(
+      "slam --builtin office --seed 2 --duration-s 60 "
+      "--scan-rate-hz 5 --lidar-sweep-s 0.2 --quiet --out " +
+      out.string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
+  EXPECT_DOUBLE_EQ(report["simulation"]["scan_rate_hz"].get<double>(), 5.0);
+  EXPECT_DOUBLE_EQ(report["simulation"]["lidar_sweep_s"].get<double>(), 0.2);
+  EXPECT_LT(report["ate"]["slam_rmse_m"].get<double>(), 0.05);
+  const auto bad = dir.path() / "bad";
+  const support::CliRun too_long = run_cli(
+      "slam --builtin office --scan-rate-hz 10 "
+      "--lidar-sweep-s 0.2 --out " +
+      bad.string());
+  EXPECT_EQ(too_long.exit_code, 2) << too_long.output;
+  EXPECT_THAT(too_long.output, HasSubstr("--lidar-sweep-s must be at most one scan period"));
+  EXPECT_FALSE(std::filesystem::exists(bad));
+}
+
 TEST(CliSlam, LogAndWorldTogetherIsAUsageError) {
   TempDir dir;
   support::write_bytes(dir / "a.clf", "");

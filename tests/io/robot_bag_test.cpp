@@ -10,6 +10,7 @@
 #include "support/data.hpp"
 #include "support/synthetic_bag.hpp"
 #include "support/temp_dir.hpp"
+#include "tessera/core/pose_interpolation.hpp"
 #include "tessera/io/tf_tree.hpp"
 
 namespace tessera {
@@ -110,6 +111,34 @@ TEST(RobotBag, AClockwiseScanComesBackCounterClockwise) {
     EXPECT_NEAR(scan->angle_min_rad + scan->angle_increment_rad * static_cast<double>(i), sent_at,
                 1e-12);
     EXPECT_EQ(scan->ranges_m[i], std::isfinite(m.ranges_m[b]) ? m.ranges_m[b] : 10.0);
+  }
+}
+
+// A scan's beams are taken time_increment apart from its stamp (LaserScan's first beam); a
+// clockwise scan put counter-clockwise keeps each beam's time. A time_increment that would make
+// the sweep last over a second, or is not a number, is not believed.
+TEST(RobotBag, EachBeamKeepsTheTimeTheDriverGaveIt) {
+  LaserScanMessage m;
+  m.angle_min_rad = 1.0F;
+  m.angle_increment_rad = -0.25F;
+  m.range_max_m = 10.0F;
+  m.time_increment_s = 0.01F;
+  m.ranges_m = {1.0F, 2.0F, 3.0F, 4.0F, 5.0F};
+  int no_return = 0;
+  Result<RangeScan> scan = range_scan_of(m, no_return);
+  ASSERT_TRUE(scan.ok()) << scan.error().message;
+  for (std::size_t b = 0; b < 5; ++b) {  // sent as beam b, kept as beam 4 - b
+    EXPECT_NEAR(beam_time_s(*scan, 4 - b), 0.01 * static_cast<double>(b), 1e-9);
+    EXPECT_EQ(scan->ranges_m[4 - b], m.ranges_m[b]);
+  }
+  m.angle_increment_rad = 0.25F;
+  scan = range_scan_of(m, no_return);
+  EXPECT_EQ(scan->first_beam_s, 0.0);
+  EXPECT_NEAR(scan->time_increment_s, 0.01, 1e-9);
+  for (const float nonsense : {0.3F, std::numeric_limits<float>::quiet_NaN()}) {
+    m.time_increment_s = nonsense;  // 0.3 s a beam: a 1.5 s sweep
+    scan = range_scan_of(m, no_return);
+    EXPECT_EQ(scan->time_increment_s, 0.0);
   }
 }
 
@@ -432,6 +461,40 @@ TEST(RobotBagRealData, Ros1NeatoLaserPoseMatchesTfStatic) {
   const auto path = support::data_path("bags/ros1_neato_drive_square_demo.bag");
   TESSERA_REQUIRE_DATA(path);
   expect_neato_bag(path, 404, 413, 0.0F, {"base_link", "base_laser_link"});
+}
+
+// The Neato's lidar spins at 5 Hz: each scan's 360 beams are taken over 0.2 s, while the robot
+// turns at up to 2.5 rad/s. Each scan says so, and carries the robot's velocity over its sweep: the
+// odometry's motion from its first beam to its last.
+TEST(RobotBagRealData, EachScanCarriesTheRobotsMotionOverItsSweep) {
+  const auto path = support::data_path("bags/ros2_neato_finite_state_controller");
+  TESSERA_REQUIRE_DATA(path);
+  RobotBagOptions options;
+  options.scan_topic = "/scan";
+  Result<RobotBag> r = read_robot_bag(path, options);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  std::vector<PoseAtNs> odometry;
+  for (const OdometryReading& o : r->log.odometry) {
+    odometry.push_back({std::llround(o.t_s * 1e9), o.pose});
+  }
+  double fastest_turn_rad_per_s = 0.0;
+  for (const StampedScan& s : r->log.scans) {
+    const std::size_t n = s.scan.ranges_m.size();
+    ASSERT_EQ(n, 361u);
+    EXPECT_EQ(s.scan.first_beam_s, 0.0);
+    EXPECT_NEAR(beam_time_s(s.scan, n - 1), 0.2, 1e-3);
+    const std::int64_t stamp = std::llround(s.t_s * 1e9);
+    const std::int64_t last = stamp + std::llround(beam_time_s(s.scan, n - 1) * 1e9);
+    const Pose2 swept = between(pose_at(odometry, stamp), pose_at(odometry, last));
+    const Pose2 driven = displacement(s.robot_velocity, beam_time_s(s.scan, n - 1));
+    // (The stamps went through seconds as doubles here: 1e-5 of slack.)
+    EXPECT_NEAR(driven.x, swept.x, 1e-5);
+    EXPECT_NEAR(driven.y, swept.y, 1e-5);
+    EXPECT_NEAR(driven.theta, swept.theta, 1e-5);
+    fastest_turn_rad_per_s =
+        std::max(fastest_turn_rad_per_s, std::abs(s.robot_velocity.omega_rad_per_s));
+  }
+  EXPECT_GT(fastest_turn_rad_per_s, 2.0);  // 0.4 rad within one sweep
 }
 
 // The ROS 2 Neato's driver publishes its odometry both as /odom and as odom -> base_footprint on

@@ -107,8 +107,8 @@ TEST(SessionFile, DamagedTruncatedNewerAndForeignFilesAreInputErrorsNamingTheFil
   flipped[200] = static_cast<char>(flipped[200] ^ 0x10);
   EXPECT_THAT(error_of(flipped), HasSubstr("checksum mismatch, the file is damaged"));
   std::string newer = good;
-  newer[8] = 4;  // format version, little-endian u32 after the signature
-  EXPECT_THAT(error_of(newer), HasSubstr("session format 4 is not one this tessera reads"));
+  newer[8] = 5;  // format version, little-endian u32 after the signature
+  EXPECT_THAT(error_of(newer), HasSubstr("session format 5 is not one this tessera reads"));
   EXPECT_THAT(error_of("FLASER 180 1.0 2.0\n"), HasSubstr("not a tessera session"));
 }
 
@@ -200,6 +200,49 @@ TEST(SessionFile, AStartAtTheFirstScanNeedsFormatThree) {
   bytes.append(reinterpret_cast<const char*>(&crc), 4);
   EXPECT_THAT(error_of(bytes), HasSubstr("trajectory start 1 is at scan 0, not at a scan after "
                                          "the first in order"));
+}
+
+/// The bytes with the CRC record dropped, the version byte set, and signed again.
+std::string resigned(std::string bytes, char version) {
+  bytes.resize(bytes.size() - 16);  // the CRC record: tag, length, 4 bytes
+  bytes[8] = version;
+  const std::uint32_t crc = crc32_of(bytes);
+  const std::uint64_t four = 4;
+  bytes += "CRC ";
+  bytes.append(reinterpret_cast<const char*>(&four), 8);
+  bytes.append(reinterpret_cast<const char*>(&crc), 4);
+  return bytes;
+}
+
+// Format 4 keeps the beams' times of swept scans and the robot's velocity over each (SWEP); a
+// session of scans taken at once is still written as format 3, which a tessera of format 3 reads.
+TEST(SessionFile, SweptScansKeepTheirBeamTimesAndVelocityInFormatFour) {
+  EXPECT_EQ(decode_session(encode_session(small_session()), "at_once.tsm")->format_version, 3u);
+  Session s = small_session();
+  s.scans[1].scan.time_increment_s = 0.2 / 360.0;
+  s.scans[2].scan.first_beam_s = 0.1;
+  s.scans[2].scan.time_increment_s = -0.001;
+  s.scans[1].robot_velocity = {0.3, -0.01, 1.25};
+  const std::string bytes = encode_session(s);
+  const Result<Session> back = decode_session(bytes, "swept.tsm");
+  ASSERT_TRUE(back.ok()) << back.error().message;
+  EXPECT_EQ(back->format_version, 4u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(back->scans[i].scan.first_beam_s, s.scans[i].scan.first_beam_s);
+    EXPECT_EQ(back->scans[i].scan.time_increment_s, s.scans[i].scan.time_increment_s);
+    EXPECT_EQ(back->scans[i].robot_velocity.vx_m_per_s, s.scans[i].robot_velocity.vx_m_per_s);
+    EXPECT_EQ(back->scans[i].robot_velocity.vy_m_per_s, s.scans[i].robot_velocity.vy_m_per_s);
+    EXPECT_EQ(back->scans[i].robot_velocity.omega_rad_per_s,
+              s.scans[i].robot_velocity.omega_rad_per_s);
+  }
+  // A format 4 file without its SWEP record is refused, naming the file.
+  EXPECT_THAT(error_of(resigned(encode_session(small_session()), 4)), HasSubstr("no SWEP record"));
+  // So is a SWEP record that does not hold one sweep per scan.
+  std::string short_sweeps = encode_session(s);
+  const std::size_t swep = short_sweeps.find("SWEP");
+  ASSERT_NE(swep, std::string::npos);
+  short_sweeps[swep + 12] = 2;  // the sweep count
+  EXPECT_THAT(error_of(resigned(short_sweeps, 4)), HasSubstr("2 sweeps for 3 scans"));
 }
 
 TEST(SessionFile, WrittenAtomicallyAndReadBack) {

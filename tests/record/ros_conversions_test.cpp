@@ -8,6 +8,8 @@
 #include <optional>
 #include <vector>
 
+#include "tessera/io/robot_bag.hpp"
+
 namespace tessera {
 namespace {
 
@@ -81,6 +83,36 @@ TEST(RosConversions, ScanKeepsItsAnglesAndRanges) {
   EXPECT_FLOAT_EQ(m.angle_max_rad, 1.0F);
   EXPECT_EQ(m.ranges_m, (std::vector<float>{1.0F, 2.0F, 11.0F, 3.0F, 4.0F}));
   EXPECT_FLOAT_EQ(m.range_max_m, 10.0F);
+}
+
+// A swept scan goes out with its time_increment; one whose beams were put counter-clockwise
+// from a clockwise driver goes out clockwise again, its first beam at the stamp, and reads back
+// as it was.
+TEST(RosConversions, ASweptScanKeepsItsBeamTimes) {
+  RangeScan scan;
+  scan.angle_min_rad = -1.0;
+  scan.angle_increment_rad = 0.5;
+  scan.max_range_m = 10.0;
+  scan.ranges_m = {1.0, 2.0, 3.0, 4.0, 5.0};
+  scan.time_increment_s = 0.01;
+  LaserScanMessage m = laser_scan_message(scan, 3, "laser");
+  EXPECT_FLOAT_EQ(m.time_increment_s, 0.01F);
+  EXPECT_FLOAT_EQ(m.angle_increment_rad, 0.5F);
+
+  reverse_beams(scan);  // as range_scan_of keeps a clockwise driver's scan
+  scan.angle_min_rad = -1.0;
+  m = laser_scan_message(scan, 3, "laser");
+  EXPECT_FLOAT_EQ(m.time_increment_s, 0.01F);
+  EXPECT_FLOAT_EQ(m.angle_increment_rad, -0.5F);
+  EXPECT_FLOAT_EQ(m.angle_min_rad, 1.0F);
+  EXPECT_EQ(m.ranges_m, (std::vector<float>{1.0F, 2.0F, 3.0F, 4.0F, 5.0F}));
+  int no_return = 0;
+  const Result<RangeScan> back = range_scan_of(m, no_return);
+  ASSERT_TRUE(back.ok());
+  EXPECT_EQ(back->ranges_m, scan.ranges_m);
+  EXPECT_NEAR(back->angle_min_rad, -1.0, 1e-6);
+  EXPECT_NEAR(back->first_beam_s, 0.04, 1e-9);
+  EXPECT_NEAR(back->time_increment_s, -0.01, 1e-9);
 }
 
 TEST(RosConversions, CellMarkerIsACubeListAtCellCentres) {

@@ -139,6 +139,50 @@ TEST(LaserRun, PerfectOdometryIsTheTruth) {
   }
 }
 
+// A spinning lidar (lidar_sweep_s): beam i is taken i * sweep / beams after the stamp, from
+// where the robot then is, so the first beam is the stamp's and the later ones differ from a scan
+// taken at once while the robot moves; each scan carries the robot's velocity over its sweep,
+// from the odometry (perfect here: the true motion from the first beam to the last, but for
+// odometry read at the stamps and interpolated between them along the chord).
+TEST(LaserRun, ASweepingLidarTakesItsBeamsOneAfterTheOther) {
+  LaserRunOptions o = cheap_options();
+  o.max_duration_s = 20.0;
+  o.scan_rate_hz = 5.0;
+  o.odometry = perfect_odometry();
+  o.lidar.range_noise_stddev_m = 0.0;
+  const Result<SimulatedLaserRun> at_once = simulate_laser_run(office(), o, 3);
+  o.lidar_sweep_s = 0.2;
+  const Result<SimulatedLaserRun> swept = simulate_laser_run(office(), o, 3);
+  ASSERT_TRUE(at_once.ok() && swept.ok());
+  ASSERT_EQ(swept->truth.size(), at_once->truth.size());
+  std::size_t moved_beams = 0;
+  double fastest_turn_rad_per_s = 0.0;
+  for (std::size_t k = 0; k + 1 < swept->truth.size(); ++k) {
+    const StampedScan& s = swept->log.scans[k];
+    EXPECT_EQ(s.scan.first_beam_s, 0.0);
+    EXPECT_NEAR(s.scan.time_increment_s, 0.2 / 36.0, 1e-15);
+    EXPECT_EQ(s.scan.ranges_m[0], at_once->log.scans[k].scan.ranges_m[0]) << "scan " << k;
+    for (std::size_t i = 1; i < s.scan.ranges_m.size(); ++i) {
+      moved_beams += s.scan.ranges_m[i] != at_once->log.scans[k].scan.ranges_m[i] ? 1 : 0;
+    }
+    const Pose2 driven = displacement(s.robot_velocity, 0.2);
+    const Pose2 truth = between(swept->truth[k].pose, swept->truth[k + 1].pose);
+    EXPECT_NEAR(driven.x, truth.x, 1e-3) << "scan " << k;
+    EXPECT_NEAR(driven.y, truth.y, 1e-3) << "scan " << k;
+    EXPECT_NEAR(driven.theta, truth.theta, 1e-3) << "scan " << k;
+    fastest_turn_rad_per_s =
+        std::max(fastest_turn_rad_per_s, std::abs(s.robot_velocity.omega_rad_per_s));
+  }
+  EXPECT_GT(moved_beams, 100u);
+  EXPECT_NEAR(fastest_turn_rad_per_s, o.max_turn_rate_rad_per_s, 0.05);
+  // A sweep longer than a scan period is refused.
+  o.lidar_sweep_s = 0.25;
+  const Result<SimulatedLaserRun> too_long = simulate_laser_run(office(), o, 3);
+  ASSERT_FALSE(too_long.ok());
+  EXPECT_THAT(too_long.error().message,
+              HasSubstr("lidar_sweep_s must be in [0, 1 / scan_rate_hz]"));
+}
+
 // Dead reckoning drifts: averaged over seeds and over stretches of the run, the position error
 // grows with the distance driven. Early stretches only: the tour comes back home, and late in a
 // run errors can partly cancel (measured: 0.04, 0.20 and 0.63 m).

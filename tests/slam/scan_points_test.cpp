@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -81,6 +82,45 @@ TEST(ScanPointsOptions, DefaultsAreValidAndBrokenFieldsAreNamed) {
   ScanPointsOptions o;
   o.max_range_m = 0.0;
   EXPECT_THAT(validate(o).value_or(""), ::testing::HasSubstr("max_range_m"));
+}
+
+// A spinning lidar on a robot that turns and drives toward a wall (the line x = 2 m of the frame
+// the robot stands in at the stamp): beam i is taken i * dt later, from where the robot then is.
+// Placed from the stamp's pose the wall comes out bent and 0.1-0.5 m off; placed beam by beam
+// from the robot's velocity, every return lies on it.
+TEST(ScanToPoints, ASweptScanIsPlacedBeamByBeamWhereTheRobotWas) {
+  const Twist2 velocity{0.3, 0.0, 1.0};  // 0.3 m/s, 1 rad/s: 0.2 rad over a 0.2 s sweep
+  const Pose2 T_robot_laser{0.05, 0.0, 0.0};
+  RangeScan scan;
+  scan.angle_min_rad = -1.0;
+  scan.angle_increment_rad = 0.01;
+  scan.max_range_m = 10.0;
+  scan.time_increment_s = 0.001;
+  for (int i = 0; i < 200; ++i) {
+    // The laser's pose at the beam's time, and its beam's distance to the wall x = 2.
+    const Pose2 T_stamp_laser = displacement(velocity, 0.001 * i) * T_robot_laser;
+    const double angle = T_stamp_laser.theta + scan.angle_min_rad + 0.01 * i;
+    scan.ranges_m.push_back((2.0 - T_stamp_laser.x) / std::cos(angle));
+  }
+  ScanPointsOptions o;
+  const ScanPoints unwarped = scan_to_points(scan, T_robot_laser, o, velocity);
+  const ScanPoints warped = scan_to_points(scan, T_robot_laser, o);
+  ASSERT_EQ(unwarped.returns_m.size(), 200u);
+  double worst_unwarped_m = 0.0, worst_warped_m = 0.0;
+  for (std::size_t i = 0; i < 200; ++i) {
+    worst_unwarped_m = std::max(worst_unwarped_m, std::abs(unwarped.returns_m[i].x - 2.0));
+    worst_warped_m = std::max(worst_warped_m, std::abs(warped.returns_m[i].x - 2.0));
+  }
+  EXPECT_LT(worst_unwarped_m, 1e-9);
+  EXPECT_GT(worst_warped_m, 0.3);
+  EXPECT_NEAR(unwarped.origin_m.x, 0.05, 1e-12);  // the sensor origin stays the stamp's
+
+  // The same through a StampedScan; and a scan whose beams have no times is taken at once.
+  const StampedScan logged{0.0, {}, T_robot_laser, scan, velocity};
+  EXPECT_EQ(scan_to_points(logged, o).returns_m[150].x, unwarped.returns_m[150].x);
+  scan.time_increment_s = 0.0;
+  EXPECT_EQ(scan_to_points(scan, T_robot_laser, o, velocity).returns_m[150].x,
+            warped.returns_m[150].x);
 }
 
 }  // namespace

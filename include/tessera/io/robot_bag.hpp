@@ -59,6 +59,8 @@ struct RobotBag {
 /// names the file or topic) when angle_increment is 0 or not finite, angle_min is not finite or
 /// range_max is not > 0. A clockwise scan (angle_increment < 0) comes back counter-clockwise: the
 /// same beams in reverse order.
+/// The beams' times are the message's time_increment from its stamp (the first beam's time, as
+/// sensor_msgs/LaserScan defines it), unless the sweep they make would last over a second.
 [[nodiscard]] Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_readings);
 
 /// Topics whose message bytes read_robot_bag needs: LaserScan, Odometry, and TFMessage on

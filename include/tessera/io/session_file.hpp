@@ -19,8 +19,10 @@
 
 namespace tessera {
 
-/// The format version this tessera writes, and the newest it reads.
-inline constexpr std::uint32_t kSessionFormatVersion = 3;
+/// The newest format version this tessera reads and writes: 4 when a scan was swept beam by beam
+/// (its beams' times and its robot's velocity, the SWEP record), 3 otherwise, so that a session of
+/// scans taken at once stays readable by a tessera of format 3.
+inline constexpr std::uint32_t kSessionFormatVersion = 4;
 
 /// A trajectory's start: its first scan's index in Session::scans and the T_map_robot it was
 /// started at (a resumed log's, found by relocalization or given; a trimmed session's segment's,
@@ -31,7 +33,7 @@ struct SessionTrajectoryStart {
 };
 
 struct Session {
-  /// The format version of the file it was read from (written: always kSessionFormatVersion).
+  /// The format version of the file it was read from (written: 4 with a swept scan, else 3).
   std::uint32_t format_version = kSessionFormatVersion;
   std::string tessera_version;  // of the tessera that wrote it
   std::string command;          // the command that wrote it ("slam")

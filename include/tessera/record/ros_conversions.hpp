@@ -40,7 +40,8 @@ namespace tessera {
                                        std::int64_t offset_ns = 0);
 
 /// sensor_msgs/LaserScan of a scan in its sensor frame; ranges outside [min, max] stay as they
-/// are (a reader treats them as no return).
+/// are (a reader treats them as no return). The beams' times go as time_increment from the stamp
+/// (a scan whose first beam was not taken at its stamp, nor its last, keeps only the increment).
 [[nodiscard]] LaserScanMessage laser_scan_message(const RangeScan& scan, std::int64_t stamp_ns,
                                                   const std::string& frame);
 

@@ -2,6 +2,7 @@
 #include <vector>
 
 #include "tessera/core/pose2.hpp"
+#include "tessera/core/twist2.hpp"
 #include "tessera/sensors/range_scan.hpp"
 
 namespace tessera {
@@ -14,6 +15,10 @@ struct StampedScan {
   Pose2 odometry;
   Pose2 laser_in_robot;
   RangeScan scan;
+  /// The robot's velocity while the laser swept the scan (robot frame, from the odometry around
+  /// it), to place each beam where the robot was when the beam was taken (scan_points.hpp). Zero
+  /// when the scan's beams have no times, the robot stood, or nothing says how it moved.
+  Twist2 robot_velocity;
 };
 
 /// An odometry pose with its stamp (CARMEN ODOM).

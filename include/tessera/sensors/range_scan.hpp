@@ -13,7 +13,26 @@ struct RangeScan {
   double min_range_m = 0.0;
   double max_range_m = 0.0;
   std::vector<double> ranges_m;
+  /// When each beam was taken, in seconds after the scan's stamp: beam i at first_beam_s + i *
+  /// time_increment_s (a spinning lidar sweeps its beams one after the other; a ROS LaserScan's
+  /// time_increment, negative once its beams are put in counter-clockwise order). Both 0: every
+  /// beam at the stamp (CARMEN logs, drivers that do not say).
+  double first_beam_s = 0.0;
+  double time_increment_s = 0.0;
 };
+
+/// When beam i was taken, in seconds after the scan's stamp.
+[[nodiscard]] inline double beam_time_s(const RangeScan& scan, std::size_t i) {
+  return scan.first_beam_s + static_cast<double>(i) * scan.time_increment_s;
+}
+
+/// The same beams in reverse order, each keeping its range and its time (the angles are the
+/// caller's: see mirrored()).
+inline void reverse_beams(RangeScan& scan) {
+  scan.first_beam_s = beam_time_s(scan, scan.ranges_m.empty() ? 0 : scan.ranges_m.size() - 1);
+  scan.time_increment_s = 0.0 - scan.time_increment_s;  // never -0
+  std::reverse(scan.ranges_m.begin(), scan.ranges_m.end());
+}
 
 /// The angle of the scan's last beam (angle_min_rad when it has none): LaserScan's angle_max.
 [[nodiscard]] inline double last_angle_rad(const RangeScan& scan) {
@@ -26,7 +45,7 @@ struct RangeScan {
 /// order from -(last angle). Mirroring twice gives the scan back.
 [[nodiscard]] inline RangeScan mirrored(RangeScan scan) {
   scan.angle_min_rad = -last_angle_rad(scan);
-  std::reverse(scan.ranges_m.begin(), scan.ranges_m.end());
+  reverse_beams(scan);
   return scan;
 }
 

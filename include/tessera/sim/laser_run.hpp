@@ -46,6 +46,11 @@ struct LaserRunOptions {
                      .min_range_m = 0.0,
                      .max_range_m = 12.0,
                      .range_noise_stddev_m = 0.01};
+  /// How long the lidar takes to sweep one scan's beams, one after the other while the robot
+  /// moves (a 5 Hz spinning lidar: 0.2 s); at most a scan period. 0: every beam at the scan's
+  /// stamp. Each scan then says when its beams were taken, and its robot_velocity comes from the
+  /// odometry over its sweep, as a bag reader gives it (io/robot_bag.hpp).
+  double lidar_sweep_s = 0.0;
   /// T_robot_laser: where the lidar sits on the robot (inside the robot: |offset| < clearance_m).
   Pose2 laser_in_robot;
   OdometryErrorOptions odometry;
@@ -77,10 +82,10 @@ struct SimulatedLaserRun {
 /// with trapezoidal speed profiles under the speed, turn-rate and acceleration limits; on an arc
 /// the speed is at most max_turn_rate * radius, and it comes to rest before each turn in place.
 /// Odometry: each integration step's true motion goes through noisy_odometry_increment and is
-/// composed onto the odometry pose. Scans: taken instantaneously at each stamp from
-/// truth * laser_in_robot; each beam is World::cast_ray plus Gaussian noise truncated at 3 sigma,
-/// clamped to [0, max_range_m], and a beam that hits nothing reports exactly max_range_m ("no
-/// return"), as Simulator::scan does.
+/// composed onto the odometry pose. Scans: taken at each stamp from truth * laser_in_robot (beam by
+/// beam over lidar_sweep_s from the stamp on, each from where the robot then is); each beam is
+/// World::cast_ray plus Gaussian noise truncated at 3 sigma, clamped to [0, max_range_m], and a
+/// beam that hits nothing reports exactly max_range_m ("no return"), as Simulator::scan does.
 ///
 /// Deterministic for a seed: the start, the odometry noise and the range noise draw from
 /// Rng(seed).fork(0), fork(1) and fork(2).

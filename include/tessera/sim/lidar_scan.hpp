@@ -1,6 +1,8 @@
 #pragma once
 // One simulated 2D lidar scan of a world: what the simulator, the simulated laser runs and the
 // simulator node (nodes/sim_node.hpp) all measure with.
+#include <span>
+
 #include "tessera/core/pose2.hpp"
 #include "tessera/core/rng.hpp"
 #include "tessera/sensors/lidar.hpp"
@@ -16,6 +18,13 @@ namespace tessera {
 /// nothing within max_range_m reports exactly max_range_m ("no return"), without noise.
 /// Cost: O(beams * max_range_m / resolution).
 [[nodiscard]] RangeScan simulate_lidar_scan(const World& world, const Pose2& T_world_laser,
+                                            const LidarOptions& lidar, Rng& rng);
+
+/// The same for a lidar that sweeps its beams one after the other while it moves: beam i is cast
+/// from T_world_laser_per_beam[i] (one pose per beam, lidar.beams of them). The scan's beam times
+/// are the caller's to set.
+[[nodiscard]] RangeScan simulate_lidar_scan(const World& world,
+                                            std::span<const Pose2> T_world_laser_per_beam,
                                             const LidarOptions& lidar, Rng& rng);
 
 }  // namespace tessera

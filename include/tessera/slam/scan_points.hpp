@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "tessera/core/pose2.hpp"
+#include "tessera/core/twist2.hpp"
 #include "tessera/core/vec2.hpp"
+#include "tessera/sensors/laser_log.hpp"
 #include "tessera/sensors/range_scan.hpp"
 
 namespace tessera::slam {
@@ -40,9 +42,21 @@ struct ScanPoints {
 };
 
 /// Converts `scan`, taken by a sensor at T_robot_laser, into robot-frame points. NaN readings and
-/// readings below the range limits are dropped. Cost: O(beams).
+/// readings below the range limits are dropped. Each beam is placed where the robot was when it was
+/// taken (beam_time_s), moving at `robot_velocity` from the stamp on, and so in the robot frame at
+/// the stamp: a lidar spinning at 5 Hz on a robot turning at 1 rad/s sees its last beam from 0.2
+/// rad further round than its first, and a wall 3 m away comes out 0.6 m from where the first beams
+/// put it (Cartographer unwarps its scans so, Hess et al. 2016, Sec. IV; LOAM with constant
+/// velocity). The sensor origin stays the one at the stamp. Cost: O(beams).
 [[nodiscard]] ScanPoints scan_to_points(const RangeScan& scan, const Pose2& T_robot_laser,
-                                        const ScanPointsOptions& options);
+                                        const ScanPointsOptions& options,
+                                        const Twist2& robot_velocity = {});
+
+/// The same for a logged scan: its sensor pose and its robot's velocity.
+[[nodiscard]] inline ScanPoints scan_to_points(const StampedScan& scan,
+                                               const ScanPointsOptions& options) {
+  return scan_to_points(scan.scan, scan.laser_in_robot, options, scan.robot_velocity);
+}
 
 /// Keeps the first point (in input order) of every square voxel of side voxel_size_m, so the
 /// output order follows the input and does not depend on hashing. voxel_size_m <= 0 keeps all

@@ -85,7 +85,10 @@ Result<LaserLog> LaserInput::read(nlohmann::json* bag_report) const {
 void without_odometry(LaserLog& log) {
   log.has_odometry = false;
   log.odometry.clear();
-  for (StampedScan& s : log.scans) s.odometry = Pose2{};
+  for (StampedScan& s : log.scans) {
+    s.odometry = Pose2{};
+    s.robot_velocity = {};  // taken from the odometry set aside
+  }
 }
 
 Status check_window(std::optional<double> from_s, std::optional<double> to_s) {

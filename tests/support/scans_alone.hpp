@@ -20,6 +20,7 @@ inline LaserLog scans_alone_as_received(LaserLog log, std::size_t max_scans) {
   if (log.scans.size() > max_scans) log.scans.resize(max_scans);
   for (StampedScan& s : log.scans) {
     s.odometry = Pose2{};
+    s.robot_velocity = {};
     const std::int64_t t_ns = to_ns(s.t_s);
     int no_return = 0;
     s.scan = *range_scan_of(laser_scan_message(s.scan, t_ns, "laser"), no_return);

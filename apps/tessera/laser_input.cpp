@@ -82,15 +82,6 @@ Result<LaserLog> LaserInput::read(nlohmann::json* bag_report) const {
   return out;
 }
 
-void without_odometry(LaserLog& log) {
-  log.has_odometry = false;
-  log.odometry.clear();
-  for (StampedScan& s : log.scans) {
-    s.odometry = Pose2{};
-    s.robot_velocity = {};  // taken from the odometry set aside
-  }
-}
-
 Status check_window(std::optional<double> from_s, std::optional<double> to_s) {
   if (from_s && to_s && !(*from_s < *to_s)) {
     return usage_error(fmt::format("--from-s {} must be before --to-s {}", *from_s, *to_s));

@@ -33,12 +33,9 @@ struct LaserInput {
   [[nodiscard]] Status check(bool live = false) const;
   /// Reads the input and cuts it to the window; `bag_report` (may be null) gets a bag's topics
   /// and frames. Input error when the window holds no scan. With no_odometry the log comes back
-  /// without odometry (LaserLog::has_odometry false, every scan's odometry the identity).
+  /// without odometry (sensors/laser_log.hpp's without_odometry).
   [[nodiscard]] Result<LaserLog> read(nlohmann::json* bag_report) const;
 };
-
-/// The log as if it recorded no odometry (--no-odometry).
-void without_odometry(LaserLog& log);
 
 /// Usage error when a window's --from-s is not before its --to-s.
 [[nodiscard]] Status check_window(std::optional<double> from_s, std::optional<double> to_s);

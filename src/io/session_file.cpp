@@ -61,8 +61,7 @@ std::string scans_payload(const std::vector<StampedScan>& scans) {
 /// SWEP record keeps them (format 4).
 bool any_swept(const std::vector<StampedScan>& scans) {
   return std::any_of(scans.begin(), scans.end(), [](const StampedScan& s) {
-    return s.scan.first_beam_s != 0.0 || s.scan.time_increment_s != 0.0 ||
-           !s.robot_velocity.is_zero();
+    return has_beam_times(s.scan) || !s.robot_velocity.is_zero();
   });
 }
 

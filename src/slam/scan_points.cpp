@@ -17,8 +17,7 @@ std::optional<std::string> validate(const ScanPointsOptions& o) {
 ScanPoints scan_to_points(const RangeScan& scan, const Pose2& T_robot_laser,
                           const ScanPointsOptions& options, const Twist2& robot_velocity) {
   // Where the robot was when beam i was taken, seen from the stamp; none when it did not move.
-  const bool unwarp =
-      !robot_velocity.is_zero() && (scan.first_beam_s != 0.0 || scan.time_increment_s != 0.0);
+  const bool unwarp = !robot_velocity.is_zero() && has_beam_times(scan);
   const auto place = [&](std::size_t i, Vec2 p_laser) {
     const Vec2 p_robot = T_robot_laser * p_laser;
     return unwarp ? displacement(robot_velocity, beam_time_s(scan, i)) * p_robot : p_robot;

@@ -39,4 +39,15 @@ struct LaserLog {
   bool has_odometry = true;
 };
 
+/// The log as if it recorded no odometry (`--no-odometry`: odometry that cannot be trusted): none,
+/// every scan's odometry the identity, and no velocity taken from it for a scan's sweep.
+inline void without_odometry(LaserLog& log) {
+  log.has_odometry = false;
+  log.odometry.clear();
+  for (StampedScan& s : log.scans) {
+    s.odometry = Pose2{};
+    s.robot_velocity = {};
+  }
+}
+
 }  // namespace tessera

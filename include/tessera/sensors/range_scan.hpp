@@ -21,6 +21,11 @@ struct RangeScan {
   double time_increment_s = 0.0;
 };
 
+/// Whether the scan's beams were taken one after the other (a sweep), not all at its stamp.
+[[nodiscard]] inline bool has_beam_times(const RangeScan& scan) {
+  return scan.first_beam_s != 0.0 || scan.time_increment_s != 0.0;
+}
+
 /// When beam i was taken, in seconds after the scan's stamp.
 [[nodiscard]] inline double beam_time_s(const RangeScan& scan, std::size_t i) {
   return scan.first_beam_s + static_cast<double>(i) * scan.time_increment_s;

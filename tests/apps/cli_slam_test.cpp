@@ -171,20 +171,16 @@ TEST(CliSlam, SimulatedRunIsScoredAgainstItsGroundTruth) {
 TEST(CliSlam, ASimulatedSpinningLidarsRunIsScored) {
   TempDir dir;
   const auto out = dir.path() / "out";
-  const support::CliRun run = run_cli(
-      "slam --builtin office --seed 2 --duration-s 60 "
-      "--scan-rate-hz 5 --lidar-sweep-s 0.2 --quiet --out " +
-      out.string());
+  const std::string swept = "slam --builtin office --lidar-sweep-s 0.2 --out ";
+  const support::CliRun run =
+      run_cli(swept + out.string() + " --seed 2 --duration-s 60 --scan-rate-hz 5 --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const nlohmann::json report = nlohmann::json::parse(read_bytes(out / "report.json"));
   EXPECT_DOUBLE_EQ(report["simulation"]["scan_rate_hz"].get<double>(), 5.0);
   EXPECT_DOUBLE_EQ(report["simulation"]["lidar_sweep_s"].get<double>(), 0.2);
   EXPECT_LT(report["ate"]["slam_rmse_m"].get<double>(), 0.05);
   const auto bad = dir.path() / "bad";
-  const support::CliRun too_long = run_cli(
-      "slam --builtin office --scan-rate-hz 10 "
-      "--lidar-sweep-s 0.2 --out " +
-      bad.string());
+  const support::CliRun too_long = run_cli(swept + bad.string() + " --scan-rate-hz 10");
   EXPECT_EQ(too_long.exit_code, 2) << too_long.output;
   EXPECT_THAT(too_long.output, HasSubstr("--lidar-sweep-s must be at most one scan period"));
   EXPECT_FALSE(std::filesystem::exists(bad));

@@ -89,15 +89,22 @@ TEST(RobotBag, OutOfRangeReadingsBecomeNoReturns) {
   EXPECT_NEAR(scan.angle_min_rad, -std::numbers::pi, 1e-6);
 }
 
-// Some drivers sweep clockwise: angle_increment < 0. The beams come back counter-clockwise, each
-// still pointing where it pointed.
-TEST(RobotBag, AClockwiseScanComesBackCounterClockwise) {
+/// Five beams swept clockwise from 1 rad, 0.25 rad apart, ranges 1-5 m (10 m at most).
+LaserScanMessage clockwise_scan() {
   LaserScanMessage m;
   m.angle_min_rad = 1.0F;
   m.angle_increment_rad = -0.25F;
   m.range_min_m = 0.1F;
   m.range_max_m = 10.0F;
-  m.ranges_m = {1.0F, 2.0F, std::numeric_limits<float>::infinity(), 4.0F, 5.0F};
+  m.ranges_m = {1.0F, 2.0F, 3.0F, 4.0F, 5.0F};
+  return m;
+}
+
+// Some drivers sweep clockwise: angle_increment < 0. The beams come back counter-clockwise, each
+// still pointing where it pointed.
+TEST(RobotBag, AClockwiseScanComesBackCounterClockwise) {
+  LaserScanMessage m = clockwise_scan();
+  m.ranges_m[2] = std::numeric_limits<float>::infinity();
   int no_return = 0;
   const Result<RangeScan> scan = range_scan_of(m, no_return);
   ASSERT_TRUE(scan.ok()) << scan.error().message;
@@ -118,12 +125,8 @@ TEST(RobotBag, AClockwiseScanComesBackCounterClockwise) {
 // clockwise scan put counter-clockwise keeps each beam's time. A time_increment that would make
 // the sweep last over a second, or is not a number, is not believed.
 TEST(RobotBag, EachBeamKeepsTheTimeTheDriverGaveIt) {
-  LaserScanMessage m;
-  m.angle_min_rad = 1.0F;
-  m.angle_increment_rad = -0.25F;
-  m.range_max_m = 10.0F;
+  LaserScanMessage m = clockwise_scan();
   m.time_increment_s = 0.01F;
-  m.ranges_m = {1.0F, 2.0F, 3.0F, 4.0F, 5.0F};
   int no_return = 0;
   Result<RangeScan> scan = range_scan_of(m, no_return);
   ASSERT_TRUE(scan.ok()) << scan.error().message;

@@ -152,6 +152,18 @@ std::uint32_t crc32_of(std::string_view bytes) {
   return ~crc;
 }
 
+/// The bytes with the CRC record dropped, the version byte set, and signed again.
+std::string resigned(std::string bytes, char version) {
+  bytes.resize(bytes.size() - 16);  // the CRC record: tag, length, 4 bytes
+  bytes[8] = version;
+  const std::uint32_t crc = crc32_of(bytes);
+  const std::uint64_t four = 4;
+  bytes += "CRC ";
+  bytes.append(reinterpret_cast<const char*>(&four), 8);
+  bytes.append(reinterpret_cast<const char*>(&crc), 4);
+  return bytes;
+}
+
 TEST(SessionFile, AVersionOneFileReadsAsOneTrajectory) {
   // Version 1 had no STRT record: drop it, set the version and sign the file again.
   std::string bytes = encode_session(small_session());
@@ -160,17 +172,7 @@ TEST(SessionFile, AVersionOneFileReadsAsOneTrajectory) {
   std::uint64_t length = 0;
   std::memcpy(&length, bytes.data() + strt + 4, 8);
   bytes.erase(strt, 12 + length);
-  bytes.resize(bytes.size() - 16);  // the CRC record: tag, length, 4 bytes
-  const auto signed_as = [&](char version) {
-    std::string out = bytes;
-    out[8] = version;
-    const std::uint32_t crc = crc32_of(out);
-    const std::uint64_t four = 4;
-    out += "CRC ";
-    out.append(reinterpret_cast<const char*>(&four), 8);
-    out.append(reinterpret_cast<const char*>(&crc), 4);
-    return out;
-  };
+  const auto signed_as = [&](char version) { return resigned(bytes, version); };
   const Result<Session> back = decode_session(signed_as(1), "old.tsm");
   ASSERT_TRUE(back.ok()) << back.error().message;
   EXPECT_TRUE(back->trajectory_starts.empty());
@@ -185,33 +187,15 @@ TEST(SessionFile, AVersionOneFileReadsAsOneTrajectory) {
 TEST(SessionFile, AStartAtTheFirstScanNeedsFormatThree) {
   Session s = small_session();
   s.trajectory_starts = {{0, {1.0, 2.0, 0.5}}, {2, {0.0, 4.0, -3.0}}};
-  std::string bytes = encode_session(s);
+  const std::string bytes = encode_session(s);
   const Result<Session> back = decode_session(bytes, "trimmed.tsm");
   ASSERT_TRUE(back.ok()) << back.error().message;
   EXPECT_EQ(back->format_version, 3u);
   EXPECT_EQ(back->trajectory_starts[0].first_scan, 0);
   EXPECT_EQ(back->trajectory_starts[0].T_map_robot.y, 2.0);
-  bytes.resize(bytes.size() - 16);  // the CRC record: tag, length, 4 bytes
-  bytes[8] = 2;
-  const std::uint32_t crc = crc32_of(bytes);
-  const std::uint64_t four = 4;
-  bytes += "CRC ";
-  bytes.append(reinterpret_cast<const char*>(&four), 8);
-  bytes.append(reinterpret_cast<const char*>(&crc), 4);
-  EXPECT_THAT(error_of(bytes), HasSubstr("trajectory start 1 is at scan 0, not at a scan after "
-                                         "the first in order"));
-}
-
-/// The bytes with the CRC record dropped, the version byte set, and signed again.
-std::string resigned(std::string bytes, char version) {
-  bytes.resize(bytes.size() - 16);  // the CRC record: tag, length, 4 bytes
-  bytes[8] = version;
-  const std::uint32_t crc = crc32_of(bytes);
-  const std::uint64_t four = 4;
-  bytes += "CRC ";
-  bytes.append(reinterpret_cast<const char*>(&four), 8);
-  bytes.append(reinterpret_cast<const char*>(&crc), 4);
-  return bytes;
+  EXPECT_THAT(error_of(resigned(bytes, 2)),
+              HasSubstr("trajectory start 1 is at scan 0, not at a scan after "
+                        "the first in order"));
 }
 
 // Format 4 keeps the beams' times of swept scans and the robot's velocity over each (SWEP); a

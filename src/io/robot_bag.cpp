@@ -113,11 +113,7 @@ Result<RangeScan> range_scan_of(const LaserScanMessage& msg, int& no_return_read
   }
   // A driver that sweeps clockwise sends a negative angle_increment; tessera's scans turn
   // counter-clockwise, so the same beams are put in that order (each keeping its time).
-  if (scan.angle_increment_rad < 0.0) {
-    scan.angle_min_rad = last_angle_rad(scan);
-    scan.angle_increment_rad = -scan.angle_increment_rad;
-    reverse_beams(scan);
-  }
+  if (scan.angle_increment_rad < 0.0) return reversed(std::move(scan));
   return scan;
 }
 

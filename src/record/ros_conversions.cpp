@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace tessera {
@@ -68,26 +69,20 @@ PathMessage path_message(std::span<const StampedPose2> trajectory, std::int64_t 
   return m;
 }
 
-LaserScanMessage laser_scan_message(const RangeScan& scan, std::int64_t stamp_ns,
+LaserScanMessage laser_scan_message(const RangeScan& taken, std::int64_t stamp_ns,
                                     const std::string& frame) {
+  // A clockwise sweep (its last beam taken at the stamp) goes out as the driver sent it: beams
+  // clockwise, the first at the stamp, as LaserScan's time_increment counts them.
+  const std::size_t n = taken.ranges_m.size();
+  const bool clockwise = taken.time_increment_s < 0.0 && n > 0 && beam_time_s(taken, n - 1) == 0.0;
+  std::optional<RangeScan> flipped;  // only then: a copy of every scan is not needed
+  if (clockwise) flipped = reversed(taken);
+  const RangeScan& scan = flipped ? *flipped : taken;
   LaserScanMessage m;
   m.header = {stamp_ns, frame};
-  const std::size_t n = scan.ranges_m.size();
   m.range_min_m = static_cast<float>(scan.min_range_m);
   m.range_max_m = static_cast<float>(scan.max_range_m);
   m.ranges_m.reserve(n);
-  // A clockwise sweep (its last beam taken at the stamp) goes out as the driver sent it: beams
-  // clockwise, the first at the stamp, as LaserScan's time_increment counts them.
-  if (scan.time_increment_s < 0.0 && n > 0 && beam_time_s(scan, n - 1) == 0.0) {
-    m.angle_min_rad = static_cast<float>(last_angle_rad(scan));
-    m.angle_increment_rad = static_cast<float>(-scan.angle_increment_rad);
-    m.angle_max_rad = static_cast<float>(scan.angle_min_rad);
-    m.time_increment_s = static_cast<float>(-scan.time_increment_s);
-    for (auto r = scan.ranges_m.rbegin(); r != scan.ranges_m.rend(); ++r) {
-      m.ranges_m.push_back(static_cast<float>(*r));
-    }
-    return m;
-  }
   m.angle_min_rad = static_cast<float>(scan.angle_min_rad);
   m.angle_increment_rad = static_cast<float>(scan.angle_increment_rad);
   m.angle_max_rad = static_cast<float>(last_angle_rad(scan));

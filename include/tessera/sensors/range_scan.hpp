@@ -45,6 +45,16 @@ inline void reverse_beams(RangeScan& scan) {
   return scan.angle_min_rad + scan.angle_increment_rad * static_cast<double>(n > 0 ? n - 1 : 0);
 }
 
+/// The same beams listed the other way round, last first: each keeps its angle, range and time,
+/// the angle and time increments change sign (a clockwise driver's scan put counter-clockwise, and
+/// back).
+[[nodiscard]] inline RangeScan reversed(RangeScan scan) {
+  scan.angle_min_rad = last_angle_rad(scan);
+  scan.angle_increment_rad = -scan.angle_increment_rad;
+  reverse_beams(scan);
+  return scan;
+}
+
 /// The same scan in the sensor frame mirrored across its x axis (y -> -y), the frame of an
 /// upside-down sensor seen from above: beam angles change sign, so the beams come in reverse
 /// order from -(last angle). Mirroring twice gives the scan back.

@@ -65,6 +65,11 @@ Pose2 noisy_odometry_increment(const Pose2& T_prev_cur_true, const OdometryError
   const double dx = T_prev_cur_true.x, dy = T_prev_cur_true.y;
   double trans = std::hypot(dx, dy);
   double rot1 = 0.0;
+  // A turn on the spot composed from poses leaves floating-point dust (1e-17 m) of translation,
+  // whose direction means nothing: it is no translation, and rot1 is 0 (else the turn's noise
+  // would grow with an arbitrary rot1 of up to 90 degrees).
+  constexpr double kNoTranslation_m = 1e-9;
+  if (trans <= kNoTranslation_m) trans = 0.0;
   if (trans > 0.0) {
     if (dx >= 0.0) {
       rot1 = std::atan2(dy, dx);

@@ -3,6 +3,7 @@
 // scan_matched_odometry_test).
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <utility>
 
 #include "tessera/sim/builtin_world.hpp"
@@ -15,8 +16,8 @@ namespace tessera::slam::testing {
 /// suite also runs under AddressSanitizer. The run starts next to a wall with beams 2 degrees
 /// apart: without joining neighbouring returns in the submaps (RangeInsertOptions) its first
 /// matches snapped to the beam spacing and the whole map came out turned by 1.5 degrees.
-inline SimulatedLaserRun simulate_office(double scan_rate_hz,
-                                         const OdometryErrorOptions& odometry) {
+inline SimulatedLaserRun simulate_office(double scan_rate_hz, const OdometryErrorOptions& odometry,
+                                         std::uint64_t seed = 7) {
   const World office = builtin_world("office", 0.1);
   LaserRunOptions o;
   o.lidar.beams = 180;
@@ -24,7 +25,7 @@ inline SimulatedLaserRun simulate_office(double scan_rate_hz,
   o.scan_rate_hz = scan_rate_hz;
   o.max_duration_s = 70.0;
   o.odometry = odometry;
-  Result<SimulatedLaserRun> r = simulate_laser_run(office, o, 7);
+  Result<SimulatedLaserRun> r = simulate_laser_run(office, o, seed);
   EXPECT_TRUE(r.ok()) << r.error().message;
   return std::move(r).value();
 }

@@ -18,10 +18,10 @@
 namespace tessera {
 
 /// Defaults: a robot whose odometry was calibrated roughly (1 % distance, 0.5 % rotation, 0.06
-/// degrees of heading per metre) and whose wheels slip a little. Measured over 4-5 minute tours
-/// of 100-125 m on three floor plans (sim/laser_run.hpp): dead reckoning ends 0.2-4 m off with
-/// heading errors up to 30 degrees, an ATE of 0.3-5 m. SLAM is expected to beat it by far.
-/// perfect_odometry() turns every error off.
+/// degrees of heading per metre) and whose wheels slip a little. Measured over 5-7 minute tours
+/// of 114-168 m on three floor plans (sim/laser_run.hpp, docs/slam-results.md): dead reckoning
+/// ends 0.2-1.2 m off with heading errors up to 12 degrees, an ATE of 0.13-0.51 m (decision
+/// 0047). SLAM is expected to beat it by far. perfect_odometry() turns every error off.
 struct OdometryErrorOptions {
   /// Odometry reports (1 + distance_scale_error) times the distance driven.
   double distance_scale_error = 0.01;
@@ -55,7 +55,9 @@ struct OdometryErrorOptions {
 /// rotation_scale_error) + heading_drift_rad_per_m * trans / 2 + noise, with noise variances
 /// alpha1 |rot_i| + alpha2 |trans| / 2 (rotations) and alpha3 |trans| + alpha4 (|rot1| + |rot2|)
 /// (distance). Draws three Gaussians from rng (none for a part whose variance is zero).
-/// Meant for small increments (a simulation step): rot1 and rot2 are taken in (-pi, pi].
+/// Meant for small increments (a simulation step): rot1 and rot2 are taken in (-pi, pi]. A
+/// translation of at most 1e-9 m (the floating-point dust a turn on the spot leaves when it is
+/// computed as the motion between two poses) is none, and rot1 is 0 (decision 0047).
 /// Precondition: validate(o) is empty. O(1).
 [[nodiscard]] Pose2 noisy_odometry_increment(const Pose2& T_prev_cur_true,
                                              const OdometryErrorOptions& o, Rng& rng);

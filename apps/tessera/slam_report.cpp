@@ -71,7 +71,16 @@ nlohmann::json slam_options_json(const slam::LaserSlamOptions& options,
 
 nlohmann::json slam_stats_json(const slam::LaserSlamResult& r, const LaserLog& log) {
   const slam::LaserSlamStats& st = r.stats;
+  // A spinning lidar's scans, and those of them placed beam by beam (a velocity over the sweep,
+  // from the odometry or, for scans alone, from odometry made from the scans).
+  const auto swept = std::count_if(log.scans.begin(), log.scans.end(),
+                                   [](const StampedScan& s) { return has_beam_times(s.scan); });
+  const auto unwarped = std::count_if(log.scans.begin(), log.scans.end(), [](const StampedScan& s) {
+    return has_beam_times(s.scan) && !s.robot_velocity.is_zero();
+  });
   return {{"scans", st.scans},
+          {"swept_scans", swept},
+          {"swept_scans_with_velocity", unwarped},
           {"nodes", st.nodes},
           {"submaps", st.submaps},
           {"loop_searches", st.loop_searches},

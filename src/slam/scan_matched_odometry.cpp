@@ -1,11 +1,41 @@
 // Odometry from local SLAM alone (scan_matched_odometry.hpp).
 #include "tessera/slam/scan_matched_odometry.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "tessera/core/assert.hpp"
+#include "tessera/core/pose_interpolation.hpp"
+#include "tessera/sensors/scan_sweep.hpp"
 
 namespace tessera::slam {
+namespace {
+
+/// Scans further apart than this say nothing of the velocity during either's sweep.
+constexpr double kMaxStepForVelocity_s = 1.0;
+
+/// The pose at t_s on the path through `poses` (one per scan, in file order), from the step
+/// between scan i and the next (or, for the last scan, the one before it), extended at constant
+/// velocity; scan i's own pose when neither step is usable.
+Pose2 pose_near_scan(const std::vector<OdometryReading>& poses, std::size_t i, double t_s) {
+  const auto usable = [&](std::size_t a) {
+    const double dt_s = poses[a + 1].t_s - poses[a].t_s;
+    return dt_s > 0.0 && dt_s <= kMaxStepForVelocity_s;
+  };
+  std::size_t a = 0;
+  if (i + 1 < poses.size() && usable(i)) {
+    a = i;
+  } else if (i > 0 && usable(i - 1)) {
+    a = i - 1;
+  } else {
+    return poses[i].pose;
+  }
+  const OdometryReading& from = poses[a];
+  const OdometryReading& to = poses[a + 1];
+  return interpolate(from.pose, to.pose, (t_s - from.t_s) / (to.t_s - from.t_s));
+}
+
+}  // namespace
 
 ScanMatchedOdometry::ScanMatchedOdometry(LaserSlamOptions options, int scans_per_restart)
     : options_(std::move(options)), scans_per_restart_(scans_per_restart) {
@@ -56,6 +86,25 @@ Result<LaserLog> with_scan_matched_odometry(LaserLog log, LaserSlamOptions optio
     log.odometry.push_back({scan.t_s, *pose});
   }
   log.has_odometry = true;
+  // A spinning lidar's scans: the robot's velocity over each sweep from that odometry, as a bag's
+  // odometry gives it (io/robot_bag.hpp), so that each beam is placed where it was taken.
+  for (std::size_t i = 0; i < log.scans.size(); ++i) {
+    StampedScan& s = log.scans[i];
+    s.robot_velocity = sweep_velocity(
+        s.scan, [&](double dt_s) { return pose_near_scan(log.odometry, i, s.t_s + dt_s); });
+  }
+  return log;
+}
+
+Result<LaserLog> with_scan_matched_sweep_velocities(LaserLog log, const LaserSlamOptions& options) {
+  const bool swept = std::any_of(log.scans.begin(), log.scans.end(),
+                                 [](const StampedScan& s) { return has_beam_times(s.scan); });
+  if (log.has_odometry || !swept) return log;
+  Result<LaserLog> matched = with_scan_matched_odometry(log, options);
+  if (!matched) return matched.error();
+  for (std::size_t i = 0; i < log.scans.size(); ++i) {
+    log.scans[i].robot_velocity = matched->scans[i].robot_velocity;
+  }
   return log;
 }
 

@@ -16,7 +16,6 @@
 #include "tessera/eval/trajectory_error.hpp"
 #include "tessera/io/carmen_log.hpp"
 #include "tessera/io/relations_file.hpp"
-#include "tessera/sim/builtin_world.hpp"
 #include "tessera/sim/laser_run.hpp"
 
 namespace tessera::slam {
@@ -96,29 +95,23 @@ TEST(LaserSlam, WithoutOdometryTheScansAloneFollowTheRobot) {
 // stamp (seed 7 turns fastest: 0.113 against 1.055 m), 0.03-0.10 m taken at once; with the default
 // odometry 0.03-0.13, 0.07-0.97 and 0.02-0.05 m.
 TEST(LaserSlam, ASweptLidarsScansArePlacedWhereEachBeamWasTaken) {
-  const World office = builtin_world("office", 0.1);
-  LaserRunOptions o;
-  o.lidar.beams = 180;
-  o.lidar.max_range_m = 10.0;
-  o.scan_rate_hz = 5.0;
-  o.max_duration_s = 70.0;
+  LaserRunOptions o = testing::office_run_options(5.0);
   o.odometry = perfect_odometry();
   o.odometry.heading_drift_rad_per_m = 0.01;
   o.odometry.distance_scale_error = 0.01;
   o.odometry.trans_var_m2_per_m = 1e-4;
-  const Result<SimulatedLaserRun> at_once = simulate_laser_run(office, o, 7);
+  const SimulatedLaserRun at_once = testing::simulate_office(o);
   o.lidar_sweep_s = 0.2;
-  const Result<SimulatedLaserRun> swept = simulate_laser_run(office, o, 7);
-  ASSERT_TRUE(at_once.ok() && swept.ok());
-  LaserLog bent = swept->log;
+  const SimulatedLaserRun swept = testing::simulate_office(o);
+  LaserLog bent = swept.log;
   for (StampedScan& s : bent.scans) s.robot_velocity = {};  // each scan from its stamp's pose
-  const Result<LaserSlamResult> unwarped = run_laser_slam(swept->log, small_submaps());
+  const Result<LaserSlamResult> unwarped = run_laser_slam(swept.log, small_submaps());
   const Result<LaserSlamResult> warped = run_laser_slam(bent, small_submaps());
-  const Result<LaserSlamResult> reference = run_laser_slam(at_once->log, small_submaps());
+  const Result<LaserSlamResult> reference = run_laser_slam(at_once.log, small_submaps());
   ASSERT_TRUE(unwarped.ok() && warped.ok() && reference.ok());
-  const double unwarped_m = mean_position_error(unwarped->trajectory, swept->truth);
-  const double warped_m = mean_position_error(warped->trajectory, swept->truth);
-  const double at_once_m = mean_position_error(reference->trajectory, at_once->truth);
+  const double unwarped_m = mean_position_error(unwarped->trajectory, swept.truth);
+  const double warped_m = mean_position_error(warped->trajectory, swept.truth);
+  const double at_once_m = mean_position_error(reference->trajectory, at_once.truth);
   std::printf(
       "mean position error: %.3f m placed beam by beam, %.3f m from the stamp (%.3f m "
       "for scans taken at once)\n",

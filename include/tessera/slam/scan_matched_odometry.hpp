@@ -45,11 +45,22 @@ class ScanMatchedOdometry {
 
 /// The log with every scan's odometry (and LaserLog::odometry) replaced by its local SLAM pose,
 /// in the frame of the first scan (ScanMatchedOdometry over the whole log, so a live node given the
-/// same scans gets the same odometry), and has_odometry true. The log's own odometry fields are
-/// not read. `options` are the local SLAM's (use_odometry and loop_closure are set off here).
-/// Usage error for invalid options, input error for a log without scans, and LaserSlam::add_scan's
-/// errors.
+/// same scans gets the same odometry), and has_odometry true; a spinning lidar's scans (beams with
+/// times) get their robot_velocity over the sweep from that odometry, as a bag's odometry gives
+/// it (a live node, which cannot wait for the next scan's pose, places them from the stamp). The
+/// log's own odometry fields are not read. `options` are the local SLAM's (use_odometry and
+/// loop_closure are set off here). Usage error for invalid options, input error for a log without
+/// scans, and LaserSlam::add_scan's errors.
 [[nodiscard]] Result<LaserLog> with_scan_matched_odometry(LaserLog log,
                                                           LaserSlamOptions options = {});
+
+/// For SLAM from scans alone: a log without odometry (has_odometry false) whose scans are a
+/// spinning lidar's (beams with times) gets every scan's robot_velocity over its sweep from the
+/// odometry with_scan_matched_odometry makes (its scans placed from their stamps), and keeps
+/// has_odometry false and its odometry fields as they were: SLAM then places each beam where it
+/// was taken (scan_points.hpp; decision 0048). Any other log is returned unchanged. Errors as
+/// with_scan_matched_odometry's.
+[[nodiscard]] Result<LaserLog> with_scan_matched_sweep_velocities(LaserLog log,
+                                                                  const LaserSlamOptions& options);
 
 }  // namespace tessera::slam

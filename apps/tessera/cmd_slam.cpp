@@ -111,9 +111,10 @@ int SlamCommand::run() const {
     if (!r) return report_error(r.error());
     read_log = std::move(r->log);
     starts = std::move(r->starts);
-  } else if (read_log && !read_log->has_odometry) {
+  } else if (read_log) {
     // Scans alone from a spinning lidar: each sweep's velocity from odometry made from the scans
-    // (a resumed log gets it with the odometry its start is found by); its time is SLAM's.
+    // (a resumed log gets it with the odometry its start is found by); its time is SLAM's. A log
+    // with odometry, or without beam times, is left as it is.
     const auto t_sweep = std::chrono::steady_clock::now();
     Result<LaserLog> swept =
         slam::with_scan_matched_sweep_velocities(std::move(*read_log), options);

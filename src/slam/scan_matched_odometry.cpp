@@ -97,15 +97,24 @@ Result<LaserLog> with_scan_matched_odometry(LaserLog log, LaserSlamOptions optio
 }
 
 Result<LaserLog> with_scan_matched_sweep_velocities(LaserLog log, const LaserSlamOptions& options) {
-  const bool swept = std::any_of(log.scans.begin(), log.scans.end(),
-                                 [](const StampedScan& s) { return has_beam_times(s.scan); });
-  if (log.has_odometry || !swept) return log;
-  Result<LaserLog> matched = with_scan_matched_odometry(log, options);
-  if (!matched) return matched.error();
-  for (std::size_t i = 0; i < log.scans.size(); ++i) {
-    log.scans[i].robot_velocity = matched->scans[i].robot_velocity;
+  if (log.has_odometry ||
+      std::none_of(log.scans.begin(), log.scans.end(),
+                   [](const StampedScan& s) { return has_beam_times(s.scan); })) {
+    return log;
   }
-  return log;
+  // The log itself goes through with_scan_matched_odometry (no copy of its scans); only its own
+  // odometry fields are kept aside and put back.
+  std::vector<Pose2> own_poses;
+  own_poses.reserve(log.scans.size());
+  for (const StampedScan& s : log.scans) own_poses.push_back(s.odometry);
+  std::vector<OdometryReading> own_stream = std::move(log.odometry);
+  Result<LaserLog> matched = with_scan_matched_odometry(std::move(log), options);
+  if (!matched) return matched.error();
+  LaserLog out = std::move(matched).value();
+  for (std::size_t i = 0; i < out.scans.size(); ++i) out.scans[i].odometry = own_poses[i];
+  out.odometry = std::move(own_stream);
+  out.has_odometry = false;
+  return out;
 }
 
 }  // namespace tessera::slam
